@@ -233,7 +233,7 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
         force(pic, "p", W @ pb, scale=FORCE_SCALE, anchor=cg, role="momentum", symbol="p", start=True,
               width=1.0 * PX_PER_PT, z=4,                          # labelled at the tip, or in view
               label_xy=cg + min(FORCE_SCALE, 0.25 * (view[1] - view[0]) / math.hypot(*pb[:2])) * (R @ pb[:2]),
-              desc=f"bias force: the centrifugal force through the ICR and G (6.119): "
+              desc=f"bias force (6.119): the force that keeps G on its circle, from G towards the ICR, "
                    f"{num(math.hypot(pb[0], pb[1]), 4)} N (m ω² times G's distance from the ICR)")
     T = W @ np.asarray(q["T"], float)
     icr_h = V @ [0.0, 0.0, 1.0]                               # the ICR, homogeneous
