@@ -27,7 +27,8 @@ from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.construction import construction_picture
 from planargeo.errors import InputError
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
-from planargeo.widgets._explorer import arrow_handle, explorer_data, xy_handle
+from planargeo.geometry.projective import is_ideal, to_xy
+from planargeo.widgets._explorer import arrow_handle, explorer_data, shown, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 from planargeo.widgets.controls import widen
 
@@ -54,9 +55,14 @@ _DATA = explorer_data("construction")
 _LABELS = _DATA["labels"]
 
 
+#: labels that say what the slider sets where the data's label says less: in twist addition, x and y
+#: place the centre of the rotation ω, before the translation u shifts the pole by ρ = u/ω (4.16)
+_SAYS = {"twist_sum": {"x{k}": "centre of ω{s}: x (m)", "y{k}": "centre of ω{s}: y (m)"}}
+
+
 def _label(kind: str, name: str) -> str:
     """The slider label of parameter ``name`` in construction ``kind``."""
-    table = _LABELS[kind]
+    table = {**_LABELS[kind], **_SAYS.get(kind, {})}
     if name in table:
         return table[name]
     m = re.fullmatch(r"([a-zA-Z]+)([12])", name)
@@ -191,7 +197,9 @@ class ConstructionExplorer(Explorer):
 
     def make_controls(self):
         n = len(construct(self._first).steps)
+        # (the label at its own width: in the page's default 80 px it read "constructi…")
         c = {"construction": W.Dropdown(options=CHOICES, value=self._first, description="construction",
+                                        style={"description_width": "initial"},
                                         layout=W.Layout(width="310px")),
              "step": Step(1, n, 1, n, "step", integer=True),
              "earlier": W.ToggleButtons(options=("faded", "shown", "hidden"), value="faded",
@@ -220,6 +228,14 @@ class ConstructionExplorer(Explorer):
         out = {k: f"{title} has no such input" for k in self._all_params if k not in used}
         if int(values["step"]) <= 1:
             out["earlier"] = "step 1 has no earlier steps: move the step slider on"
+        if kind == "twist_sum":
+            for k in "12":
+                s = subscript(k)
+                if values[f"u{k}"] == 0:
+                    out[f"angle{k}"] = f"u{s} = 0: no translation, so no direction; set u{s} first"
+                if values[f"w{k}"] == 0:
+                    out[f"x{k}"] = out[f"y{k}"] = (f"ω{s} = 0: v{s} is a translation, its pole at "
+                                                   f"infinity; a centre counts only while ω{s} ≠ 0")
         return out
 
     def explain(self):
@@ -271,7 +287,32 @@ class ConstructionExplorer(Explorer):
                                     view=view or self.VIEWS.get(state["kind"], self.VIEW), size=self.figure_px,
                                     all_steps=all_steps, caption=caption, band_below=view is None)
 
+    def _pole_handle(self, name: str, kx: str, ky: str) -> Handle:
+        """Twist addition's handle ``v₁`` / ``v₂``: on the pole drawn (the centre shifted by the
+        translation, 4.16), moving the centre with it; none while the pole is at infinity."""
+        k = kx[1:]
+
+        def pole():
+            if self.state is None or self.state["kind"] != "twist_sum":
+                return None
+            q = {e.name: e.value for e in self.state["c"].steps[0].elements}.get(f"Q{k}")
+            return None if q is None or bool(is_ideal(q)) else to_xy(q)
+
+        def where():
+            p = pole()
+            return None if p is None else (float(p[0]), float(p[1]))
+
+        def drag(x, y):
+            p, v = pole(), shown(self)
+            if p is None:
+                return {}
+            return {kx: x - (float(p[0]) - v[kx]), ky: y - (float(p[1]) - v[ky])}
+
+        return Handle(name, where, drag)
+
     def handles(self) -> list[Handle]:
+        if self.construction == "twist_sum":
+            return [self._pole_handle(*p) for p in _POINTS["twist_sum"]]
         return ([xy_handle(self, *p) for p in _POINTS[self.construction]]
                 + [arrow_handle(self, *d, arm=ARM, flip=True) for d in _DIRECTIONS.get(self.construction, [])])
 
