@@ -26,7 +26,7 @@ import numpy as np
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import num, subscript, where
 from planargeo.draw.pictures.common import builder, label_line, point_along
-from planargeo.geometry.projective import is_at_infinity
+from planargeo.geometry.projective import is_at_infinity, is_ideal
 
 __all__ = ["projective_picture"]
 
@@ -42,6 +42,16 @@ def _line_words(L) -> str:
     F = math.hypot(L[0], L[1])
     ang = math.degrees(math.atan2(L[1], L[0]))
     return f"{num(abs(L[2]) / F)} m from the origin, direction {num(ang)}°"
+
+
+def _in_box(pic: Picture, p) -> bool:
+    """True for a finite point inside the picture's view (drawn as a marker, not an edge arrow)."""
+    p = np.asarray(p, float)
+    if bool(is_ideal(p)):
+        return False
+    x, y = -p[1] / p[2], p[0] / p[2]          # [vx, vy, w] -> (x, y) (4.10)
+    x0, x1, y0, y1 = pic.box
+    return bool(x0 <= x <= x1 and y0 <= y <= y1)
 
 
 @builder
@@ -89,9 +99,11 @@ def projective_picture(st: dict, *, construction: bool = True, line_and_pole: bo
                      desc=f"{meaning} ({eq}): {_line_words(L)}",
                      width=0.6 * 1.389 if name.startswith("chord") else None)
         for name, sym, p, meaning in points:
-            point_along(pic, name, p, role="twist", color=GREY, size=5.5, symbol=sym,
-                        label=f"pole of chord c{sym[-1]}" if name.startswith("chord pole") else "",
-                      desc=f"{meaning} ({eq}): {where(p)}")
+            # unlabelled in view (its tangent shows it); off view its edge arrow names it
+            label = (f"pole of chord c{sym[-1]}" if name.startswith("chord pole")
+                     else "" if _in_box(pic, p) else sym)
+            point_along(pic, name, p, role="twist", color=GREY, size=5.5, symbol=sym, label=label,
+                        desc=f"{meaning} ({eq}): {where(p)}")
     pic.line("polar", st["polar"], role="wrench", symbol="C P", label="", arrow=False,
              desc=f"polar of P, the line C P (5.36): {_line_words(st['polar'])}")
     label_line(pic, "polar", "polar of P")
