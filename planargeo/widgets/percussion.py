@@ -132,6 +132,8 @@ class PercussionExplorer(Described, Explorer):
         }
 
     def __init__(self, **kw):
+        # the view shown when a handle's drag began, kept until its release (:meth:`_holding`)
+        self._held_view, self._drag_update = None, False
         super().__init__(**kw)
         # a greyed pole slider shows no number: the impact's pole is elsewhere (its tooltip says where)
         for name in ("pole x", "pole y"):
@@ -153,12 +155,13 @@ class PercussionExplorer(Described, Explorer):
             out["polygon"] = "used with shape = custom polygon"
         return out
 
-    def _axis_points(self):
-        """(point on the axis nearest ``c``, a second point on it), or None (no finite axis)."""
+    def _axis_points(self, f=None):
+        """(point on the axis ``f`` (the shown one by default) nearest ``c``, a second point on it),
+        or None (no finite axis): where its two handles are."""
         st = self.state
         if st is None:
             return None
-        f, c = st["f"], st["c"]
+        f, c = st["f"] if f is None else f, st["c"]
         F = math.hypot(f[0], f[1])
         if F == 0.0:
             return None
@@ -168,7 +171,15 @@ class PercussionExplorer(Described, Explorer):
         return foot, foot + 0.35 * e
 
     def _pole_for_axis(self, f):
-        """Control values whose acceleration pole has ``f`` as its axis (``a = I⁻¹ f``)."""
+        """Control values whose acceleration pole has ``f`` as its axis (``a = I⁻¹ f``); refused where
+        a handle of the axis would leave what the view can show (:meth:`_reach`)."""
+        x0, x1, y0, y1 = self._reach()
+        for what, p in zip(("axis point", "axis direction handle"), self._axis_points(f) or ()):
+            if not (x0 <= p[0] <= x1 and y0 <= p[1] <= y1):
+                px, py = num(round(float(p[0]), 2)), num(round(float(p[1]), 2))
+                raise InputError(f"this axis puts its {what} at ({px}, {py}) m, out of the picture's reach: "
+                                 f"it shows the handles within the pole sliders' range, x from {num(x0)} to "
+                                 f"{num(x1)} m and y from {num(y0)} to {num(y1)} m")
         a = percussion_pole(self.state["I"].matrix, f)
         if bool(is_ideal(a)) or abs(a[2]) <= 1e-12 * float(np.abs(a).max()):
             raise DegenerateGeometryError("an axis through the centre of mass has its pole at "
@@ -198,13 +209,39 @@ class PercussionExplorer(Described, Explorer):
         pole_drive = lambda: self.state is not None and self.values["drive"] == "acceleration pole"
         axis = lambda k: (tuple(self._axis_points()[k]) if pole_drive() and self._axis_points()
                           is not None else None)
+        pole = xy_handle(self, "a", "pole x", "pole y", when=pole_drive)
         return [
-            xy_handle(self, "a", "pole x", "pole y", when=pole_drive),
-            Handle("axis (point)", lambda: axis(0), self._drag_axis_point),
-            Handle("axis (direction)", lambda: axis(1), self._drag_axis_direction),
+            Handle(pole.name, pole.where, self._holding(pole.drag)),
+            Handle("axis (point)", lambda: axis(0), self._holding(self._drag_axis_point)),
+            Handle("axis (direction)", lambda: axis(1),
+                   self._holding(self._drag_axis_direction)),
             Handle("impact", lambda: None if pole_drive() or self.state is None
-                   else (self.values["impact at"], 0.0), lambda x, y: {"impact at": x}),
+                   else (self.values["impact at"], 0.0),
+                   self._holding(lambda x, y: {"impact at": x})),
         ]
+
+    def _reach(self):
+        """``(x0, x1, y0, y1)``: where a handle can be and stay in the view (the pole sliders' box,
+        which :meth:`mechanism_points` fits the view to)."""
+        px, py = self.controls["pole x"], self.controls["pole y"]
+        return (px.min, px.max, py.min, py.max)
+
+    def _holding(self, drag):
+        """``drag``, keeping the view shown while a handle is dragged: the view fits the state
+        (:meth:`_view`), so re-fitted at each step it would move under the pointer and the handle would
+        run away from it.  The release (or any other change) fits it again."""
+        def held(x, y):
+            vals = drag(x, y)                       # a refused step (raised) holds nothing
+            if self._held_view is None and self.state is not None:
+                self._held_view = self._view(self.state)
+            self._drag_update = True
+            return vals
+        return held
+
+    def _release(self):
+        # the end of a drag (HandleMixin): the view fits the state again, as a fresh explorer's
+        self._held_view, self._drag_update = None, False
+        super()._release()
 
     def _shape_inertia(self, v):
         """The shape and its unit-density inertia ``I0`` (5.64), integrated once per shape."""
@@ -217,6 +254,9 @@ class PercussionExplorer(Described, Explorer):
         return cached(self._cache("_inertias"), key, integrate)
 
     def compute(self, values, changed):
+        dragged, self._drag_update = self._drag_update, False
+        if not dragged:                 # a control, Play or reset: the view fits the state again
+            self._held_view = None
         shape, I0 = self._shape_inertia(values)
         m = float(values["mass (kg)"])
 
@@ -270,7 +310,7 @@ class PercussionExplorer(Described, Explorer):
 
     def scene_picture(self, state, view=None):
         return percussion_picture(state, impact=self.values["drive"] == "impact",
-                                  view=view or self._view(state), size=self.figure_px)
+                                  view=view or self._held_view or self._view(state), size=self.figure_px)
 
     #: the view's step (m)
     _STEP = 0.25
