@@ -77,3 +77,12 @@ def test_the_sliders_name_the_centre_and_the_handle_sits_on_the_pole_drawn():
     assert drawn(ex, "Q2") == pytest.approx((2.0, 1.0))
     assert ex.handle_position("v₂") == pytest.approx((2.0, 1.0))
     assert (ex.values["x2"], ex.values["y2"]) == pytest.approx((0.5, 1.0))
+
+
+def test_a_pole_beyond_the_view_has_no_handle_and_the_sliders_still_move_it():
+    ex = ConstructionExplorer("twist_sum", display="agg")
+    ex.set(u1=3.0, w1=0.05)                     # ρ = u/ω = 60 m: the pole far above the view
+    assert ex.message == "" and ex.handle_position("v₁") is None
+    assert "v₁" not in {h["id"] for h in ex.picture()["handles"]}
+    ex.set(w1=1.0)                              # back in view: the handle on it again
+    assert ex.handle_position("v₁") == pytest.approx(pole(-1.5, 0.0, 1.0, 3.0, 0.0))

@@ -289,14 +289,19 @@ class ConstructionExplorer(Explorer):
 
     def _pole_handle(self, name: str, kx: str, ky: str) -> Handle:
         """Twist addition's handle ``v₁`` / ``v₂``: on the pole drawn (the centre shifted by the
-        translation, 4.16), moving the centre with it; none while the pole is at infinity."""
+        translation, 4.16), moving the centre with it; none while the pole is at infinity or outside
+        the construction's view (a slow rotation's pole is far off: the sliders still reach it)."""
         k = kx[1:]
+        x0, x1, y0, y1 = self.VIEWS["twist_sum"]
 
         def pole():
             if self.state is None or self.state["kind"] != "twist_sum":
                 return None
             q = {e.name: e.value for e in self.state["c"].steps[0].elements}.get(f"Q{k}")
-            return None if q is None or bool(is_ideal(q)) else to_xy(q)
+            if q is None or bool(is_ideal(q)):
+                return None
+            p = to_xy(q)
+            return p if x0 <= p[0] <= x1 and y0 <= p[1] <= y1 else None
 
         def where():
             p = pole()
