@@ -55,14 +55,9 @@ _DATA = explorer_data("construction")
 _LABELS = _DATA["labels"]
 
 
-#: labels that say what the slider sets where the data's label says less: in twist addition, x and y
-#: place the centre of the rotation ω, before the translation u shifts the pole by ρ = u/ω (4.16)
-_SAYS = {"twist_sum": {"x{k}": "centre of ω{s}: x (m)", "y{k}": "centre of ω{s}: y (m)"}}
-
-
 def _label(kind: str, name: str) -> str:
     """The slider label of parameter ``name`` in construction ``kind``."""
-    table = {**_LABELS[kind], **_SAYS.get(kind, {})}
+    table = _LABELS[kind]
     if name in table:
         return table[name]
     m = re.fullmatch(r"([a-zA-Z]+)([12])", name)
