@@ -710,6 +710,8 @@ function render({ model, el }) {
     const hid = ev.target.dataset && ev.target.dataset.handle;
     svg.setPointerCapture(ev.pointerId);
     if (hid) {
+      tip.style.display = "none";     // a drag moves what the tip described: it goes, as on leaving
+      hoverId = null;
       drag = { id: hid, circle: ev.target };
       focusHandle = hid;
       markHandle();

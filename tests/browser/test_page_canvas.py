@@ -171,6 +171,12 @@ def _exercise(page, where: str) -> None:
     line.hover(force=True)
     tip = page.locator(".pg-tip").first
     _wait_for(lambda: "horizontal line through P" in tip.inner_text(), 10, f"{where}: the hover text")
+    # pressing a handle starts a drag: the tip (what the pointer was over) goes, as on leaving
+    handle.hover(force=True)
+    _wait_for(lambda: tip.is_visible(), 10, f"{where}: the handle's hover text")
+    page.mouse.down()
+    _wait_for(lambda: not tip.is_visible(), 5, f"{where}: the tip hidden when a drag starts")
+    page.mouse.up()
     # 6. Play: the page asks for frames by itself while playing is on, one at a time
     api = page.locator(".pg-canvas").first
     page.get_by_role("button", name="play").click()
