@@ -105,8 +105,7 @@ def _free_label(pic: Picture, eid: str, s, f, text: str) -> None:
     el = next(e for e in pic.elements if e["id"] == eid)
     if ok.any():
         k = np.unravel_index(np.argmin(np.where(ok, gap, np.inf)), ok.shape)
-        ddx, ddy = round(float(dx[k]), 2), round(float(dy[k]), 2)
-        part = _text_part(float(s[0]), float(s[1]), text, ddx, ddy, "left", "bottom")
+        part = _text_part(float(s[0]), float(s[1]), text, float(dx[k]), float(dy[k]), "left", "bottom")
     else:
         part = _text_part(float(s[0]), float(s[1]), text, 7.0, -7.0, "left", "top")
     el["parts"].append(part)
