@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw.picture import _CHAR_EM, FONT_PX, Picture, _text_part
+from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import num, pair, where
 from planargeo.draw.pictures.common import builder, label_line
 from planargeo.draw.pictures.kit import label_at
@@ -62,53 +62,6 @@ def percussion_numbers(st: dict) -> dict:
     d0 = float(np.hypot(*c))
     out["grip_spot"] = c + c / d0 * (rho * rho / d0) if d0 > 0 else None
     return out
-
-
-def _free_label(pic: Picture, eid: str, s, f, text: str) -> None:
-    """Label element ``eid`` at ``s`` with ``text``: the free spot nearest ``s``, on its side of ``f``.
-
-    The spot is free as the label placer counts it (:mod:`planargeo.draw._labels`: no stroke sample
-    in the label's box, grown by 2 to 3 px) and meets no other label; the box no nearer ``s`` than 3 px.  With no free spot within 60 px, the label is
-    asked 7 px below and right of ``s`` and the placer moves it.
-    """
-    from planargeo.draw._labels import ALIGN_X, ALIGN_Y, CELL, TOL, _table
-
-    w, h = _CHAR_EM * FONT_PX * len(text), 1.25 * FONT_PX
-    pw, ph = pic._plot
-    sx, sy = (float(s[0]) - pic.box[0]) * pic.kx, (float(s[1]) - pic.box[2]) * pic.ky
-    T = _table(pic)
-    ny, nx = T.shape[0] - 1, T.shape[1] - 1
-    dx, dy = np.meshgrid(np.arange(-w - 60.0, 61.0), np.arange(-h - 60.0, 61.0))   # box corners from s (px)
-    x0, y0 = sx + dx, sy + dy
-    cell = lambda v, n: np.clip(v / CELL + 0.5, 0, n).astype(np.intp)
-    m = CELL / 2 + 1.0 - TOL         # the box grown so that no stroke grazes it (the raster's cells are coarse)
-    i0, i1 = cell(x0 - m, nx), cell(x0 + w + m, nx)
-    j0, j1 = cell(y0 - m, ny), cell(y0 + h + m, ny)
-    count = T[j1, i1] - T[j0, i1] - T[j1, i0] + T[j0, i0]
-    gap = np.hypot(np.clip(sx, x0, x0 + w) - sx, np.clip(sy, y0, y0 + h) - sy)
-    ok = (count == 0) & (gap >= 3.0) & (x0 >= 0) & (y0 >= 0) & (x0 + w <= pw) & (y0 + h <= ph)
-    F = math.hypot(f[0], f[1])
-    if F > 0:        # the box's centre on the side of the axis the spot is on (5.56: tz = x fy - y fx)
-        bx = pic.box[0] + (x0 + w / 2) / pic.kx
-        by = pic.box[2] + (y0 + h / 2) / pic.ky
-        side = lambda x, y: x * f[1] - y * f[0] - f[2]
-        here = np.sign(side(float(s[0]), float(s[1])))
-        if here != 0:                # (a spot on the axis: either side)
-            ok &= np.sign(side(bx, by)) == here
-    for e in pic.elements:           # and clear of the other labels where they are asked to be
-        for q in e["parts"]:
-            if q["p"] == "text":
-                qw = _CHAR_EM * FONT_PX * len(q["text"])
-                qx = (q["x"] - pic.box[0]) * pic.kx + q["dx"] - ALIGN_X[q["ha"]] * qw
-                qy = (q["y"] - pic.box[2]) * pic.ky + q["dy"] - ALIGN_Y[q["va"]] * h
-                ok &= ~((x0 < qx + qw + 2) & (qx < x0 + w + 2) & (y0 < qy + h + 2) & (qy < y0 + h + 2))
-    el = next(e for e in pic.elements if e["id"] == eid)
-    if ok.any():
-        k = np.unravel_index(np.argmin(np.where(ok, gap, np.inf)), ok.shape)
-        part = _text_part(float(s[0]), float(s[1]), text, float(dx[k]), float(dy[k]), "left", "bottom")
-    else:
-        part = _text_part(float(s[0]), float(s[1]), text, 7.0, -7.0, "left", "top")
-    el["parts"].append(part)
 
 
 @builder
@@ -156,12 +109,9 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
         pic.marks("spot", [s], role="wrench", shape="D", size=10.0, color=COLORS["wrench"], z=6, symbol=name,
                   desc=f"sweet spot of the grip (5.67): strike there and the hands feel no sting, {where_}"
                   if grip_spot else f"centre of percussion (5.68): where the axis crosses the line a–c, {where_}")
-        if not grip_spot:
-            label_at(pic, s, name, gap=7.0, dy=-11.0, va="top")
+        label_at(pic, s, name, gap=7.0, dy=-7.0 if grip_spot else -11.0, va="top")
     pic.point("c", from_xy(c), role="twist", glyph=False, color="#000000", size=6.5, symbol="c",
               desc=f"centre of mass c (1.65): at {pair(c)} m")
     pic.point("a", a, role="accel", glyph_scale=0.3, size=9.5, symbol="a",
               desc=f"acceleration pole a (5.64): the point of the body with no acceleration, {where(a)}")
-    if s is not None and grip_spot:   # near its diamond, on its side of the axis (review: 45 px off, by c)
-        _free_label(pic, "spot", s, f, name)
     return pic
