@@ -122,10 +122,10 @@ class SliderCrankExplorer(SceneTime, Explorer):
 
     def make_controls(self):
         return {
-            # short labels (a word, the symbol and unit: ψ̇ and ψ look alike at 11 px), the meaning on hover
-            "crank angle (deg)": Step(-180, 180, 1, 23.0, "angle ψ₀ (°)",
+            # short labels (symbol and unit: the slider keeps its length), the meaning on hover
+            "crank angle (deg)": Step(-180, 180, 1, 23.0, "ψ₀ (°)",
                                       tip="crank angle ψ₀ at t = 0 (°): where Play starts"),
-            "crank speed": Step(-100, 100, 0.5, 20.0, "speed ψ̇₀ (rad/s)", tip="crank speed ψ̇₀ at t = 0 (rad/s)"),
+            "crank speed": Step(-100, 100, 0.5, 20.0, "ψ̇₀ (rad/s)", tip="crank speed ψ̇₀ at t = 0 (rad/s)"),
             "t (s)": self.time_control(),
             "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
             "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)"),
