@@ -121,7 +121,7 @@ def test_truncated_singular_joint_raises_with_cond():
     from planargeo.screws.twists import inertia_matrix
     I = [inertia_matrix(1.0, [0.5, 0.0], 0.1), np.zeros((3, 3))]
     S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
-    with pytest.raises(SingularConfigurationError, match="joint 1") as info:
+    with pytest.raises(SingularConfigurationError, match="joint 2 ") as info:
         articulated_recursion(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2, steps=0)
     assert info.value.cond == np.inf
     r = articulated_recursion(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2, steps=0, check=False)
