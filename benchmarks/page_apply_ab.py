@@ -227,10 +227,14 @@ def main(argv=None) -> int:
 
     from planargeo.widgets.canvas import PictureCanvas
 
-    old = (Path(a.a_file).read_text() if a.a_file else
-           subprocess.run(["git", "show", f"{a.a_rev}:planargeo/widgets/canvas.js"], cwd=ROOT,
-                          check=True, capture_output=True, text=True).stdout)
-    new = (ROOT / "planargeo" / "widgets" / "canvas.js").read_text()
+    def at_rev(name):       # a file of the renderer at a git revision ("" where it did not exist)
+        out = subprocess.run(["git", "show", f"{a.a_rev}:planargeo/widgets/{name}"], cwd=ROOT,
+                             capture_output=True, text=True)
+        return out.stdout if out.returncode == 0 else ""
+
+    # the page renderer is canvas_parts.js then canvas.js, one module (canvas.py's _ESM)
+    old = Path(a.a_file).read_text() if a.a_file else at_rev("canvas_parts.js") + at_rev("canvas.js")
+    new = str(PictureCanvas._esm)
     if a.voila:
         res = voila(old, new, a.rounds, a.block)
         print("Voila, the chain: ms, median (p90)")

@@ -21,6 +21,15 @@ from planargeo.widgets import ChainExplorer
 NAMES = list(pw.EXPLORERS)
 
 
+@pytest.fixture(autouse=True)
+def _answered_at_once(monkeypatch):
+    """Replies at once, as with no kernel: an event loop a browser test left running in this process
+    would otherwise hold them for a kernel's idle message (``PictureCanvas.defer``) that never comes."""
+    from planargeo.widgets.canvas import PictureCanvas
+
+    monkeypatch.setattr(PictureCanvas, "defer", False)
+
+
 @pytest.fixture(scope="module")
 def explorers():
     return {n: getattr(pw, n)(display="page") for n in NAMES}

@@ -186,6 +186,10 @@ _HA = {"left": "l", "center": "c", "right": "r"}
 _VA = {"bottom": "b", "center": "c", "top": "t"}
 _KINDS = {"text", "mark", "arrow", "glyph", "ellipse"}
 
+#: the page renderer, one ES module shipped in the package (no build step): what it draws with,
+#: then the renderer itself
+_ESM = "".join(Path(__file__).with_name(name).read_text(encoding="utf-8")
+               for name in ("canvas_parts.js", "canvas.js"))
 _CSS = """
 .pg-canvas { position: relative; font-family: 'DejaVu Sans', sans-serif; user-select: none;
              max-width: 100%; min-width: 0; overflow-x: auto; overflow-y: hidden; }
@@ -368,7 +372,7 @@ class PictureCanvas(anywidget.AnyWidget):
     #: reply it would delay the new picture's paint.
     defer = True
 
-    _esm = Path(__file__).with_name("canvas.js")
+    _esm = _ESM
     _css = _CSS
     picture = traitlets.Dict()
     playing = traitlets.Bool(False).tag(sync=True)
