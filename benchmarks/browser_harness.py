@@ -228,6 +228,31 @@ window.harnessReady = true;
 """
 
 
+def serve_files(files: dict):
+    """A threaded HTTP server on 127.0.0.1 (a free port) answering GETs from ``files``: path -> (bytes, type)."""
+    import http.server
+    import threading
+
+    class Handler(http.server.BaseHTTPRequestHandler):
+        def do_GET(self):  # noqa: N802 - http.server's name
+            body, kind = files.get(self.path.split("?")[0], (None, None))
+            if body is None:
+                self.send_error(404)
+                return
+            self.send_response(200)
+            self.send_header("Content-Type", kind + "; charset=utf-8")
+            self.send_header("Content-Length", str(len(body)))
+            self.end_headers()
+            self.wfile.write(body)
+
+        def log_message(self, *args):
+            pass
+
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return server
+
+
 class CanvasHarness:
     """The page renderer (``canvas.js``) alone, in a static page served from 127.0.0.1.
 
@@ -247,9 +272,6 @@ class CanvasHarness:
     """
 
     def __init__(self):
-        import http.server
-        import threading
-
         from planargeo.widgets.canvas import PictureCanvas
 
         # anywidget turns the class's _esm / _css into file contents (str() is the text)
@@ -257,25 +279,8 @@ class CanvasHarness:
         html = _HARNESS_HTML.format(css=str(PictureCanvas._css)).encode()
         files = {"/": (html, "text/html"), "/canvas.js": (js, "text/javascript")}
 
-        class Handler(http.server.BaseHTTPRequestHandler):
-            def do_GET(self):  # noqa: N802 - http.server's name
-                body, kind = files.get(self.path.split("?")[0], (None, None))
-                if body is None:
-                    self.send_error(404)
-                    return
-                self.send_response(200)
-                self.send_header("Content-Type", kind + "; charset=utf-8")
-                self.send_header("Content-Length", str(len(body)))
-                self.end_headers()
-                self.wfile.write(body)
-
-            def log_message(self, *args):
-                pass
-
-        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        self.server = serve_files(files)
         self.url = f"http://127.0.0.1:{self.server.server_address[1]}/"
-        self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
-        self.thread.start()
 
     def open(self, browser, width: int = 1200, height: int = 900):
         """A new page of ``browser`` (playwright) showing the harness, ready for ``window.show``."""

@@ -27,16 +27,14 @@ Run::
 from __future__ import annotations
 
 import argparse
-import http.server
 import json
 import statistics
 import subprocess
 import sys
-import threading
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from browser_harness import launch_chromium  # noqa: E402
+from browser_harness import launch_chromium, serve_files as serve  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forces", "T/U split",
@@ -132,27 +130,6 @@ def chain_updates(n_drag: int = 40) -> tuple[dict, list[dict], list[str]]:
         ex.controls["angle"].value = -30.0 + k
         take("slider")
     return state, msgs, kinds
-
-
-def serve(files: dict) -> http.server.ThreadingHTTPServer:
-    class Handler(http.server.BaseHTTPRequestHandler):
-        def do_GET(self):  # noqa: N802
-            body, kind = files.get(self.path.split("?")[0], (None, None))
-            if body is None:
-                self.send_error(404)
-                return
-            self.send_response(200)
-            self.send_header("Content-Type", kind + "; charset=utf-8")
-            self.send_header("Content-Length", str(len(body)))
-            self.end_headers()
-            self.wfile.write(body)
-
-        def log_message(self, *args):
-            pass
-
-    srv = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
-    threading.Thread(target=srv.serve_forever, daemon=True).start()
-    return srv
 
 
 def voila(old: str, new: str, rounds: int, block: int) -> dict:
