@@ -139,6 +139,46 @@ class Described:
         return {**self.symbols, **self.meanings}
 
 
+class HeldView:
+    """A view fitted to the state (``_fitted_view(state)``), held while a handle is dragged, so that the
+    pointer's place in the page keeps its meaning (re-fitted at each step, the view would move under the
+    pointer and the handle run away from it); the release, or any update that is not a drag's, fits it
+    again.  Handles' drags go through :meth:`holding`; ``compute`` starts with :meth:`drag_or_fit`; the
+    picture is drawn in ``self.held_view or self._fitted_view(state)``.
+    """
+
+    held_view = None
+    _drag_update = False
+
+    def holding(self, drag):
+        """``drag`` (a handle's ``(x, y) -> values``), holding the view shown when the drag began."""
+        def held(x, y):
+            vals = drag(x, y)                       # a refused step (raised) holds nothing
+            if self.held_view is None and self.state is not None:
+                self._hold_view(self.state)
+            self._drag_update = True
+            return vals
+        return held
+
+    def _hold_view(self, state) -> None:
+        self.held_view = self._fitted_view(state)
+
+    def _unhold_view(self) -> None:
+        self.held_view = None
+
+    def drag_or_fit(self) -> None:
+        """At the start of an update: a drag's keeps the held view, any other fits the view again."""
+        dragged, self._drag_update = self._drag_update, False
+        if not dragged:
+            self._unhold_view()
+
+    def _release(self):
+        # the end of a drag (HandleMixin): the view fits the state again, as a fresh explorer's
+        self._unhold_view()
+        self._drag_update = False
+        super()._release()
+
+
 class ChainBodies:
     """What explorers of a chain of ``bodies n`` (mass 1, joints ``L = 1`` apart) share."""
 

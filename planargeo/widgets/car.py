@@ -19,7 +19,7 @@ from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG
                                          moves, view_box)
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import Described
+from planargeo.widgets._explorer import Described, HeldView
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["CarExplorer", "view_box", "grip"]
@@ -58,7 +58,7 @@ def grip(res, mu: float):
     return r_g * float(np.hypot(w * w, wd)), float(mu) * G_ROAD
 
 
-class CarExplorer(Described, Explorer):
+class CarExplorer(HeldView, Described, Explorer):
     """Tyre forces of a car cornering and accelerating (thesis 6.9), dragged and driven round the turn.
 
     Parameters
@@ -74,11 +74,7 @@ class CarExplorer(Described, Explorer):
     def __init__(self, **kw):
         # the scene function itself (scenes.build checks parameter names on every call)
         self._scene = scenes.get("car")
-        # the view shown when a handle's drag began: kept while the drag goes on (the pointer's place
-        # in the page must keep its meaning), dropped by the first update that is not a drag's
-        self._held_view = None
-        self._held_rear = None          # and where the rear tyre was drawn: the car is held still too
-        self._drag_update = False
+        self._held_rear = None          # where the rear tyre was drawn when a drag began: held still too
         super().__init__(**kw)
 
     def make_controls(self):
@@ -105,9 +101,7 @@ class CarExplorer(Described, Explorer):
                            outlines=False)
 
     def compute(self, values, changed):
-        dragged, self._drag_update = self._drag_update, False
-        if not dragged:                 # a slider, Play or reset: the view fits the state again
-            self._held_view = self._held_rear = None
+        self.drag_or_fit()              # a slider, Play or reset: the view fits the state again
         d = float(values[RADIUS])
         V = float(values[SPEED])
         if d <= 0:
@@ -166,27 +160,18 @@ class CarExplorer(Described, Explorer):
     def handles(self) -> list:
         # G along the car (ε); the steering lever's end on the front axle line (d = L / tan δ); the ICR along the
         # rear axle line (d); the tip of the f_A arrow along the front wheel (F_A)
-        return [Handle("centre of gravity", self._cg_where, self._holding(self._cg_drag)),
-                Handle("steering", self._steer_where, self._holding(self._steer_drag)),
-                Handle("ICR", self._icr_where, self._holding(self._icr_drag)),
-                Handle("drive", self._drive_where, self._holding(self._drive_drag))]
+        return [Handle("centre of gravity", self._cg_where, self.holding(self._cg_drag)),
+                Handle("steering", self._steer_where, self.holding(self._steer_drag)),
+                Handle("ICR", self._icr_where, self.holding(self._icr_drag)),
+                Handle("drive", self._drive_where, self.holding(self._drive_drag))]
 
-    def _holding(self, drag):
-        """``drag``, keeping the view shown while a handle is dragged: the view fits the state
-        (:meth:`view_of`), so it would zoom under the pointer and a handle would run away from it."""
-        def held(x, y):
-            vals = drag(x, y)                       # a refused step (raised) holds nothing
-            if self._held_view is None and self.state is not None:
-                self._held_view = self.view_of(self.state)
-                self._held_rear = np.array(self._drawn(self.state["res"].extra["rear_contact"]))
-            self._drag_update = True
-            return vals
-        return held
+    def _hold_view(self, state):
+        super()._hold_view(state)
+        self._held_rear = np.array(self._drawn(state["res"].extra["rear_contact"]))
 
-    def _release(self):
-        # the end of a drag (HandleMixin.drag): the view fits the state again, as a fresh explorer's
-        self._held_view, self._held_rear, self._drag_update = None, None, False
-        super()._release()
+    def _unhold_view(self):
+        super()._unhold_view()
+        self._held_rear = None
 
     def _cg_where(self):
         return self._drawn(self.state["res"].extra["cg"])
@@ -256,9 +241,11 @@ class CarExplorer(Described, Explorer):
         p = st["res"].params
         return view_box(p["d"], p["L"], math.radians(float(st["heading"])), p["F_A"])
 
+    _fitted_view = view_of                  # (HeldView)
+
     def scene_picture(self, state, view=None):
         th = math.radians(float(state["heading"]))
-        return car_picture(state["res"], heading=th, view=view or self._held_view or self.view_of(state),
+        return car_picture(state["res"], heading=th, view=view or self.held_view or self.view_of(state),
                            slides=state["slides"], limit=state["limit"], size=self.figure_px,
                            shift=self._shift(state["res"].params["d"], th))
 

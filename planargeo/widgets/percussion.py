@@ -21,7 +21,7 @@ from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy, is_ideal
 from planargeo.draw.pictures._words import num
 from planargeo.widgets.readout import point_value
-from planargeo.widgets._explorer import Described, xy_handle
+from planargeo.widgets._explorer import Described, HeldView, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["PercussionExplorer", "PRESETS", "parse_polygon"]
@@ -100,7 +100,7 @@ def pole_words(a) -> str:
     return p if isinstance(p, str) else f"at ({num(p[0])}, {num(p[1])}) m"
 
 
-class PercussionExplorer(Described, Explorer):
+class PercussionExplorer(HeldView, Described, Explorer):
     """Acceleration pole and axis of percussion of a body at rest (thesis 5.4).
 
     Parameters
@@ -132,8 +132,6 @@ class PercussionExplorer(Described, Explorer):
         }
 
     def __init__(self, **kw):
-        # the view shown when a handle's drag began, kept until its release (:meth:`_holding`)
-        self._held_view, self._drag_update = None, False
         super().__init__(**kw)
         # a greyed pole slider shows no number: the impact's pole is elsewhere (its tooltip says where)
         for name in ("pole x", "pole y"):
@@ -211,13 +209,13 @@ class PercussionExplorer(Described, Explorer):
                           is not None else None)
         pole = xy_handle(self, "a", "pole x", "pole y", when=pole_drive)
         return [
-            Handle(pole.name, pole.where, self._holding(pole.drag)),
-            Handle("axis (point)", lambda: axis(0), self._holding(self._drag_axis_point)),
+            Handle(pole.name, pole.where, self.holding(pole.drag)),
+            Handle("axis (point)", lambda: axis(0), self.holding(self._drag_axis_point)),
             Handle("axis (direction)", lambda: axis(1),
-                   self._holding(self._drag_axis_direction)),
+                   self.holding(self._drag_axis_direction)),
             Handle("impact", lambda: None if pole_drive() or self.state is None
                    else (self.values["impact at"], 0.0),
-                   self._holding(lambda x, y: {"impact at": x})),
+                   self.holding(lambda x, y: {"impact at": x})),
         ]
 
     def _reach(self):
@@ -225,23 +223,6 @@ class PercussionExplorer(Described, Explorer):
         which :meth:`mechanism_points` fits the view to)."""
         px, py = self.controls["pole x"], self.controls["pole y"]
         return (px.min, px.max, py.min, py.max)
-
-    def _holding(self, drag):
-        """``drag``, keeping the view shown while a handle is dragged: the view fits the state
-        (:meth:`_view`), so re-fitted at each step it would move under the pointer and the handle would
-        run away from it.  The release (or any other change) fits it again."""
-        def held(x, y):
-            vals = drag(x, y)                       # a refused step (raised) holds nothing
-            if self._held_view is None and self.state is not None:
-                self._held_view = self._view(self.state)
-            self._drag_update = True
-            return vals
-        return held
-
-    def _release(self):
-        # the end of a drag (HandleMixin): the view fits the state again, as a fresh explorer's
-        self._held_view, self._drag_update = None, False
-        super()._release()
 
     def _shape_inertia(self, v):
         """The shape and its unit-density inertia ``I0`` (5.64), integrated once per shape."""
@@ -254,9 +235,7 @@ class PercussionExplorer(Described, Explorer):
         return cached(self._cache("_inertias"), key, integrate)
 
     def compute(self, values, changed):
-        dragged, self._drag_update = self._drag_update, False
-        if not dragged:                 # a control, Play or reset: the view fits the state again
-            self._held_view = None
+        self.drag_or_fit()              # a control, Play or reset: the view fits the state again
         shape, I0 = self._shape_inertia(values)
         m = float(values["mass (kg)"])
 
@@ -310,7 +289,7 @@ class PercussionExplorer(Described, Explorer):
 
     def scene_picture(self, state, view=None):
         return percussion_picture(state, impact=self.values["drive"] == "impact",
-                                  view=view or self._held_view or self._view(state), size=self.figure_px)
+                                  view=view or self.held_view or self._view(state), size=self.figure_px)
 
     #: the view's step (m)
     _STEP = 0.25
@@ -339,3 +318,5 @@ class PercussionExplorer(Described, Explorer):
         lo = np.floor(lo / self._STEP + 1e-9) * self._STEP
         hi = np.ceil(hi / self._STEP - 1e-9) * self._STEP
         return (float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]))
+
+    _fitted_view = _view                  # (HeldView)
