@@ -22,7 +22,7 @@ from planargeo.draw.pictures._words import force, num, pair, subscript, where
 from planargeo.draw.style import COLORS
 from planargeo.geometry.conics import drawable_conic
 
-__all__ = ["fit_box", "chain_view", "articulated_picture", "CHART", "CHAIN_SHARE", "MARGIN"]
+__all__ = ["fit_box", "chain_view", "key_corner", "articulated_picture", "CHART", "CHAIN_SHARE", "MARGIN"]
 
 
 def fit_box(mechanism, extra=(), margin: float = 0.15, reach: float = 3.0,
@@ -96,6 +96,72 @@ def chain_view(box, size, margin) -> tuple[float, float, float, float]:
     cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
     left = cx - CHAIN_SHARE * W / 2
     return (left, left + W, cy - H / 2, cy + H / 2)
+
+
+def key_corner(lines, size, key, *, inset: float = 2.0, pad: float = 4.0):
+    """Where a key of size ``key`` goes in a plot area of size ``size`` so that it covers no line.
+
+    Tried in turn: the upper left and upper right corners, the middle of the right and of the left
+    side, the lower left and lower right corners.
+
+    Parameters
+    ----------
+    lines : list of array_like (m, 2)
+        The curves drawn (polylines, their points in pixels from the plot area's lower left corner).
+    size : (float, float)
+        The plot area's width and height (pixels).
+    key : (float, float)
+        The key's width and height (pixels).
+    inset : float
+        The key's distance from the plot area's sides (pixels).
+    pad : float
+        The least distance kept between the key and a line (pixels).
+
+    Returns
+    -------
+    tuple or None
+        The key's lower left corner ``(x, y)`` (pixels), or None when every place covers a line.
+
+    Examples
+    --------
+    >>> key_corner([[[0.0, 0.0], [100.0, 100.0]]], (100.0, 100.0), (30.0, 20.0))   # the diagonal
+    (2.0, 78.0)
+    >>> key_corner([[[0.0, 100.0], [100.0, 0.0]]], (100.0, 100.0), (30.0, 20.0))   # the other one
+    (68.0, 78.0)
+    >>> key_corner([[[0.0, 50.0], [100.0, 50.0]], [[50.0, 0.0], [50.0, 100.0]]], (100.0, 100.0),
+    ...            (80.0, 80.0)) is None
+    True
+    """
+    (w, h), (kw, kh) = size, key
+    left, right, bottom, top = inset, w - inset - kw, inset, h - inset - kh
+    for x, y in ((left, top), (right, top), (right, (h - kh) / 2), (left, (h - kh) / 2), (left, bottom),
+                 (right, bottom)):
+        box = (x - pad, x + kw + pad, y - pad, y + kh + pad)
+        if not any(_crosses(np.asarray(xy, float).reshape(-1, 2), box) for xy in lines):
+            return (float(x), float(y))
+    return None
+
+
+def _crosses(xy, box) -> bool:
+    """Whether the polyline ``xy`` has a point in the rectangle ``box = (x0, x1, y0, y1)`` (Liang–Barsky)."""
+    x0, x1, y0, y1 = box
+    for (ax, ay), (bx, by) in zip(xy, xy[1:] if len(xy) > 1 else xy):
+        dx, dy = bx - ax, by - ay
+        t0, t1 = 0.0, 1.0
+        for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
+            if p == 0.0:
+                if q < 0.0:
+                    break
+            else:
+                t = q / p
+                if p < 0.0:
+                    t0 = max(t0, t)
+                else:
+                    t1 = min(t1, t)
+        else:
+            if t0 <= t1:
+                return True
+    return False
 
 
 @builder
@@ -250,7 +316,17 @@ def _draw_chart(pic, comps, errs, scale: float, outboard: int, k: int) -> None:
     fx, fy = 1.0 / pic.kx, 1.0 / pic.ky        # data units per pixel
     cx0, cx1 = X0 + (CHAIN_SHARE + 0.08) * (X1 - X0), X1 - 14.0 * fx
     cy0, cy1 = Y0 + 44.0 * fy, Y1 - 30.0 * fy
-
+    # the legend (two columns) in a corner of the chart the curves leave free, else above them all
+    rows = (len(curves) + 1) // 2
+    key_w, key_h = 2 * 50.0 - 2.0, rows * 15.0 + 2.0        # pixels
+    width, height = (cx1 - cx0) * pic.kx, (cy1 - cy0) * pic.ky
+    lines = [np.column_stack([(steps - s0) / (s1 - s0) * width, (y - lo) / (hi - lo) * height])
+             for _, _, y in curves]
+    corner = key_corner(lines, (width, height), (key_w, key_h))
+    if corner is None:                          # no corner free: the values' axis raised above the curves
+        r = (key_h + 2.0 + 6.0) / height
+        hi = max(hi, (float(np.max(vis)) + 0.02 - r * lo) / (1.0 - r))
+        corner = (2.0, height - 2.0 - key_h)
     sx, sy = (cx1 - cx0) / (s1 - s0), (cy1 - cy0) / (hi - lo)
 
     def at(s, v):
@@ -287,16 +363,15 @@ def _draw_chart(pic, comps, errs, scale: float, outboard: int, k: int) -> None:
                  desc=f"{meaning} (10.2.2): " + ", ".join(num(v, 3) for v in y), z=3)
         pic.elements[-1]["parts"] += [{"p": "mark", "x": float(x), "y": float(v), "shape": "s" if err else "o",
                                        "size": 4.0} for x, v in xy]
-    # the legend: two columns in the lower right corner of the chart
-    rows = (len(curves) + 1) // 2
-    kx0, ky1 = cx1 - 2 * 50.0 * fx, cy0 + rows * 15.0 * fy + 4.0 * fy
-    pic.path("key box", [[kx0, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, ky1],
-                           [kx0, ky1]], role="chart", closed=True, fill="#ffffff", alpha=0.85, color="#cccccc",
-             width=0.6, symbol="key", desc=f"the chart's key: {len(curves)} curves", z=5)
+    kx0, ky0 = cx0 + corner[0] * fx, cy0 + corner[1] * fy
+    kx1, ky1 = kx0 + key_w * fx, ky0 + key_h * fy
+    pic.path("key box", [[kx0, ky0], [kx1, ky0], [kx1, ky1], [kx0, ky1]], role="chart", closed=True,
+             fill="#ffffff", alpha=0.85, color="#cccccc", width=0.6, symbol="key",
+             desc=f"the chart's key: {len(curves)} curves", z=5)
     for m, (name, color, _) in enumerate(curves):
         col, row = divmod(m, rows)
-        x = cx1 - (2 - col) * 50.0 * fx + 4.0 * fx
-        y = cy0 + (rows - row) * 15.0 * fy - 4.0 * fy
+        x = kx0 + (col * 50.0 + 4.0) * fx
+        y = ky1 - (row * 15.0 + 8.0) * fy
         pic.text(f"key {name}", (x, y), ("— " if name != "error" else "··· ") + name, color=color,
                  ha="left", va="center", symbol=name,
                  desc=f"the chart's key: {name}" + ("" if name == "error" else f", entry {name} of A{kk}"))
