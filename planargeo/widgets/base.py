@@ -42,7 +42,7 @@ from planargeo.widgets.controls import (TEXT_LIMIT, Choice, ControlsMixin, Step,
 from planargeo.widgets.export import ExportMixin
 from planargeo.widgets.front import FrontMixin
 from planargeo.widgets.handles import Handle, HandleMixin
-from planargeo.widgets.play import PlayMixin
+from planargeo.widgets.play import DRAG_SYNC_S, PlayMixin
 from planargeo.widgets.readout import fmt, point_text
 
 __all__ = ["Explorer", "Handle", "Step", "Choice", "Toggle", "cached", "check_control", "fmt", "point_text",
@@ -114,6 +114,11 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     #: Simulated seconds per wall-clock second at Play speed "1×" (shown beside the speed menu when not 1).
     time_scale: float = 1.0
 
+    #: While the page drags a handle, controls, readout and message reach it at most this often
+    #: (seconds; the picture follows every step), and at once at the drag's release or a refused
+    #: step.  0: with every picture.
+    drag_sync_s: float = DRAG_SYNC_S
+
     #: The wall clock Play reads (seconds; a test may give the explorer its own).
     wall_clock: Callable[[], float] = staticmethod(time.monotonic)
 
@@ -134,6 +139,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         self.last_export: Path | None = None
         self._message = ""
         self._hold = self._quiet = 0
+        self._drag_step = self._sync_now = False
         self._pending = self._busy = self._resetting = self._exporting = False
         self._changed: set[str] = set()
         self._echo: dict[str, list] = {}
@@ -351,6 +357,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             yield
             return
         self._after_depth = 1
+        self._drag_step = self._sync_now = False
         stack = contextlib.ExitStack()
         try:
             for w in [*self.controls.values(), self.readout, self.message_box]:
@@ -358,10 +365,21 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             yield
         finally:
             self._after_depth = 0
-            # while the page plays the syncs wait longer (PlayMixin._keep_play_hold): at most
-            # every PLAY_SYNC_S seconds (a hold inside Play's hold holds nothing of its own)
-            if not self._keep_play_hold(stack):
+            dragging = self._drag_step and not self._sync_now
+            self._drag_step = self._sync_now = False
+            # while the page plays or drags the syncs wait longer (PlayMixin._keep_hold): at most
+            # every PLAY_SYNC_S or drag_sync_s seconds, and at once after the drag or a refusal
+            # (a hold inside such a hold holds nothing of its own)
+            if not self._keep_hold(stack, dragging):
                 stack.close()
+
+    def _page_drag(self, name: str, x: float, y: float) -> None:
+        """A drag step from the page (HandleMixin's): the controls', readout's and message's values
+        held with those of the drag's earlier steps (at most ``drag_sync_s``; the picture goes at
+        once), sent at the drag's release or a refusal."""
+        with self._page_after():      # the page's request holds already; a drag from Python: here
+            self._drag_step = True
+            super()._page_drag(name, x, y)
 
     def set(self, **values) -> "Explorer":
         """Set several controls at once (one update); if one value is refused, none is set.
@@ -494,6 +512,10 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     def _refuse(self, message: str, figure_text: str | None = None) -> None:
         """Report ``message`` and return controls, picture and readout to the shown state."""
         self.n_refusals += 1
+        if getattr(self, "_after_depth", 0):
+            self._sync_now = True      # a drag's held values go after this update's picture
+        elif getattr(self, "_play_hold", None) is not None:
+            self._release_play_hold()  # ... or now (no update around: nothing goes before them)
         reverted = [k for k, v in self.shown_values.items()
                     if k in self.controls and not same_value(self.controls[k].value, v)]
         self._set_controls(self.shown_values)

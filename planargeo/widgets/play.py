@@ -24,7 +24,7 @@ import ipywidgets as W
 from planargeo.errors import InputError, PlanargeoError
 from planargeo.widgets.controls import same_value
 
-__all__ = ["MAX_CATCHUP", "MAX_ADVANCE_FRAMES", "MAX_ADVANCE_SECONDS", "MAX_ANIMATION_FRAMES",
+__all__ = ["MAX_CATCHUP", "PLAY_SYNC_S", "DRAG_SYNC_S", "MAX_ADVANCE_FRAMES", "MAX_ADVANCE_SECONDS", "MAX_ANIMATION_FRAMES",
            "substeps", "run_substeps", "check_count", "check_duration", "PlayClock"]
 # PlayMixin (below) is the explorer's Play; it is documented with the Explorer it is part of
 
@@ -33,6 +33,10 @@ MAX_CATCHUP = 0.5
 #: while the page plays, controls and readout reach it at most this often (s); pictures at once,
 #: and with each picture the controls Play moves (the time: the number compared with the picture)
 PLAY_SYNC_S = 0.25
+#: while the page drags a handle, controls, readout and message reach it at most this often (s),
+#: and at once when the drag ends or a step is refused; the picture follows every step (the
+#: explorer's ``drag_sync_s``, 0: with every picture)
+DRAG_SYNC_S = 0.2
 #: frames one call of ``advance`` may take without ``allow_long=True``
 MAX_ADVANCE_FRAMES = 10_000
 #: simulated seconds one call of ``advance`` may cover without ``allow_long=True``
@@ -408,27 +412,51 @@ class PlayMixin:
         self.play_control.playing = False
         return False
 
-    def _keep_play_hold(self, stack: contextlib.ExitStack) -> bool:
-        """While the page plays, keep the syncs ``stack`` holds (True); sent every PLAY_SYNC_S.
+    def _keep_hold(self, stack: contextlib.ExitStack, dragging: bool = False) -> bool:
+        """While the page plays or drags, keep the syncs ``stack`` holds (True), sent every
+        PLAY_SYNC_S (Play) or ``drag_sync_s`` (a drag step: ``dragging``).
 
-        Called as each update's syncs would go (after its picture); while they are held, the
-        controls the last Play frame moved (the time) go at once (:meth:`_send_play_moved`).
+        Called as each update's syncs would go (after its picture).  While Play holds them, the
+        controls the last Play frame moved (the time) go at once (:meth:`_send_play_moved`); a
+        drag's held values go at the next update that is not a drag step (its release, a refusal),
+        or ``drag_sync_s`` after they were first held (a timer, in a kernel) if that comes first.
         """
         if not hasattr(self, "_play_hold"):      # before Play's controls exist
             return False
         playing = (self.has_play and self._page_plays and self.play_control is not None
                    and self.play_control.playing)
+        drag_s = float(getattr(self, "drag_sync_s", 0.0) or 0.0)
+        every = PLAY_SYNC_S if playing else (drag_s if dragging and drag_s > 0 else 0.0)
         now = time.monotonic()
-        if playing and self._play_hold is None:
+        if every and self._play_hold is None:
             self._play_hold, self._play_synced = stack, now
-            self._send_play_moved()
+            if playing:
+                self._send_play_moved()
+            else:
+                self._sync_later(every)
             return True
         if self._play_hold is not None:
-            if not playing or now - self._play_synced >= PLAY_SYNC_S:
+            if not every or now - self._play_synced >= every:
                 self._release_play_hold()
-            else:
+            elif playing:
                 self._send_play_moved()
         return False
+
+    def _sync_later(self, seconds: float) -> None:
+        """A drag's held values sent ``seconds`` from now if still held (in a kernel; without an
+        event loop the drag's release sends them)."""
+        try:
+            loop = asyncio.get_running_loop()
+        except RuntimeError:
+            return
+        hold = self._play_hold
+
+        def due():
+            playing = self.play_control is not None and self.play_control.playing
+            if self._play_hold is hold and not playing and not getattr(self, "_after_depth", 0):
+                self._release_play_hold()
+
+        loop.call_later(seconds, due)
 
     def _send_play_moved(self) -> None:
         """The values of the controls the last Play frame moved, sent now (the rest wait for the
@@ -441,7 +469,7 @@ class PlayMixin:
             self._play_sent[k] = w.value
 
     def _release_play_hold(self) -> None:
-        """Send the controls' and readout's held values to the page (Play's periodic sync)."""
+        """Send the controls' and readout's held values to the page (Play's or a drag's sync)."""
         hold, self._play_hold = self._play_hold, None
         self._play_sent.clear()
         if hold is not None:
