@@ -357,8 +357,25 @@ def _combine(X, x, Y, y, names: tuple) -> np.ndarray:
 def _gram(A: np.ndarray, s: np.ndarray, point=None):
     """``(A s, sᵀ A s, cond)`` (6.67, :func:`joint_cond`), measured at ``point`` (or the origin); never raises."""
     As = A @ s
-    M, cond = _weighted_gram(s, As, _norm(A), None if point is None else joint_scale(A, s, point))
+    scale = None
+    if point is not None:
+        scale = _joint_scale_fast(A, s, point)
+        if scale is None:
+            scale = joint_scale(A, s, point)
+    M, cond = _weighted_gram(s, As, _norm(A), scale)
     return As, M, cond
+
+
+def _joint_scale_fast(A, s, point):
+    """:func:`joint_scale` of one joint given as finite float arrays, without its checks (None: ask it)."""
+    if not (type(A) is np.ndarray and type(s) is np.ndarray and type(point) is np.ndarray
+            and A.shape == (3, 3) and s.ndim == 2 and s.shape[0] == 3 and s.shape[1] <= 3
+            and point.shape == (2,) and A.dtype == s.dtype == point.dtype == np.float64):
+        return None
+    rows = A.tolist()
+    if not math.isfinite(sum(rows[0]) + sum(rows[1]) + sum(rows[2])):   # (or too big to add): checked there
+        return None
+    return _joint_scale_one(rows, s.T.tolist(), *point.tolist())
 
 
 def _checked_gram(A: np.ndarray, s: np.ndarray, what: str, point=None) -> tuple[np.ndarray, np.ndarray]:
