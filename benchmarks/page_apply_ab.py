@@ -132,15 +132,53 @@ def chain_updates(n_drag: int = 40) -> tuple[dict, list[dict], list[str]]:
     return state, msgs, kinds
 
 
-def voila(old: str, new: str, rounds: int, block: int) -> dict:
-    """Drag steps, F and apply times in Voila: two chains in one page, one drawn by A, one by B."""
+def drag_on(page, cv, handle: str, moves: int, gap: float = 1 / 60, px: float = 2.0) -> dict:
+    """A drag as a hand makes it: a mouse move every ``gap`` s (not waiting for the pictures).
+
+    Returns the lag of each picture shown (its move → painted, ms: the page keeps only the latest
+    drag request while one is in flight), pictures shown per second, and each picture's frame's
+    main-thread work after its animation-frame callback (style, layout, paint: frame end − paint).
+    """
+    import time
+
+    import page_latency as pl
+
+    circle = cv.locator(f"circle[data-handle='{handle}']").first
+    box = circle.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    n0 = pl._api(cv, "p.stats.length")
+    t0 = time.perf_counter()
+    for k in range(moves):
+        x += px if (k // 15) % 2 == 0 else -px
+        page.mouse.move(x, y)
+        time.sleep(max(0.0, t0 + (k + 1) * gap - time.perf_counter()))
+    page.mouse.up()
+    pl._wait_idle(cv)
+    time.sleep(0.1)
+    st = [s for s in pl._api(cv, f"p.stats.slice({n0})") if s["type"] == "drag" and s.get("tPaint")]
+    if len(st) < 2:
+        return {}
+    span = (st[-1]["tPaint"] - st[0]["tPaint"]) / 1e3
+    return {"lag": [s["tPaint"] - s["tInput"] for s in st],
+            "pictures/s": [(len(st) - 1) / span] if span > 0 else [],
+            "frame end − paint": [s["tFrame"] - s["tPaint"] for s in st if s.get("tFrame")]}
+
+
+def voila(old: str, new: str, rounds: int, block: int, sync_s: dict | None = None,
+          continuous: int = 0) -> dict:
+    """Drag steps, F and apply times in Voila: two chains in one page, one drawn by A, one by B
+    (``sync_s``: each chain's ``drag_sync_s``, where given)."""
     import tempfile
     import time
 
     import page_latency as pl
     from playwright.sync_api import sync_playwright
 
-    res = {k: {"F": [], "drag": [], "apply": [], "ack → painted": []} for k in "AB"}
+    res = {k: {"F": [], "drag": [], "apply": [], "move → ack": [], "ack → painted": [], "kernel ms": [],
+               "paint → frame end": [], "continuous: lag": [], "continuous: pictures/s": [],
+               "continuous: frame end − paint": []} for k in "AB"}
     make = "pw.ChainExplorer(display='page', links=10, **{k: True for k in %r})" % (OVERLAYS,)
     with tempfile.TemporaryDirectory() as tmp, sync_playwright() as p:
         tmp = Path(tmp)
@@ -149,7 +187,9 @@ def voila(old: str, new: str, rounds: int, block: int) -> dict:
         cells = ["import planargeo.widgets as pw"]
         for k, js in (("A", old), ("B", new)):
             (tmp / f"{k}.js").write_text(js)
-            cells.append(f"chain{k} = {make}\nchain{k}.canvas._esm = open({str(tmp / f'{k}.js')!r}).read()\nchain{k}")
+            own = f"\nchain{k}.drag_sync_s = {sync_s[k]!r}" if (sync_s or {}).get(k) is not None else ""
+            cells.append(f"chain{k} = {make}\nchain{k}.canvas._esm = open({str(tmp / f'{k}.js')!r}).read()"
+                         f"{own}\nchain{k}")
         pl._notebook(root / "page.ipynb", cells)
         server, url = pl.serve("voila", root, tmp)
         browser = launch_chromium(p)
@@ -165,7 +205,7 @@ def voila(old: str, new: str, rounds: int, block: int) -> dict:
                 pl._until(cv, "p.elements() > 0 && !p.busy()", 60_000)
                 # B's module keeps the attributes it wrote on the nodes: each view runs its own module
                 marked = cv.evaluate("(el) => !!el.querySelector('.pg-el > *').__pgAttrs")
-                if marked != (k == "B"):
+                if old != new and marked != (k == "B"):
                     raise RuntimeError(f"the view {k} does not run module {k}")
                 views[k] = cv
             for r in range(rounds + 1):
@@ -181,6 +221,14 @@ def voila(old: str, new: str, rounds: int, block: int) -> dict:
                     res[k]["drag"] += pl.drag(page, cv, "link 10 end", block)[0]
                     res[k]["apply"] += pl._api(cv, f"p.applyTimes.slice({a0})")
                     res[k]["ack → painted"] += [st["tPaint"] - st["tAck"] for st in pl.STEPS[n0:]]
+                    res[k]["move → ack"] += [st["tAck"] - st["tInput"] for st in pl.STEPS[n0:]]
+                    res[k]["kernel ms"] += [st.get("kernelMs") for st in pl.STEPS[n0:]]
+                    res[k]["paint → frame end"] += [st["tFrame"] - st["tPaint"] for st in pl.STEPS[n0:]
+                                                    if st.get("tFrame")]
+                    if continuous:
+                        c = drag_on(page, cv, "link 10 end", continuous)
+                        for m, v in c.items():
+                            res[k]["continuous: " + m] += v
         finally:
             browser.close()
             server.stop()
@@ -199,6 +247,12 @@ def main(argv=None) -> int:
     ap.add_argument("--rounds", type=int, default=6)
     ap.add_argument("--voila", action="store_true", help="the A/B in Voila (module docstring)")
     ap.add_argument("--block", type=int, default=8, help="--voila: steps per block")
+    ap.add_argument("--continuous", type=int, default=0,
+                    help="--voila: also a drag of this many mouse moves, one every 1/60 s, per block")
+    ap.add_argument("--same-js", action="store_true", help="--voila: A runs the package's canvas.js too")
+    ap.add_argument("--a-drag-sync-s", type=float, default=None,
+                    help="--voila: chain A's drag_sync_s (0: controls and readout synced with every step)")
+    ap.add_argument("--b-drag-sync-s", type=float, default=None, help="--voila: chain B's drag_sync_s")
     a = ap.parse_args(argv)
     from playwright.sync_api import sync_playwright
 
@@ -212,11 +266,13 @@ def main(argv=None) -> int:
     # the page renderer is canvas_parts.js then canvas.js, one module (canvas.py's _ESM)
     old = Path(a.a_file).read_text() if a.a_file else at_rev("canvas_parts.js") + at_rev("canvas.js")
     new = str(PictureCanvas._esm)
+    if a.same_js:
+        old = new
     if a.voila:
-        res = voila(old, new, a.rounds, a.block)
+        res = voila(old, new, a.rounds, a.block, {"A": a.a_drag_sync_s, "B": a.b_drag_sync_s}, a.continuous)
         print("Voila, the chain: ms, median (p90)")
         for m in res["A"]:
-            print(f"  {m:14s} A {_med(res['A'][m])}   B {_med(res['B'][m])}   (n {len(res['A'][m])}, {len(res['B'][m])})")
+            print(f"  {m:30s} A {_med(res['A'][m])}   B {_med(res['B'][m])}   (n {len(res['A'][m])}, {len(res['B'][m])})")
         return 0
     state, msgs, kinds = chain_updates()
     print(f"{len(msgs)} updates: " + ", ".join(f"{k} {kinds.count(k)}" for k in dict.fromkeys(kinds)))

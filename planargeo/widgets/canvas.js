@@ -155,7 +155,14 @@ function render({ model, el }) {
     if (done && done.type === "tick" && m.ok !== false && !pending.size) maybeTick();
     if (m.update) applyFrame(m.update);
     if (done) { done.tAck = tAck; done.tApplied = performance.now(); done.kernelMs = m.ms; }
-    requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); });
+    requestAnimationFrame(() => {
+      if (!done) return;
+      done.tPaint = performance.now();
+      // the end of that frame's main-thread work (style, layout, paint): a task posted from its rAF
+      const ch = new MessageChannel();
+      ch.port1.onmessage = () => { done.tFrame = performance.now(); };
+      ch.port2.postMessage(0);
+    });
     say(m.ok === false && m.message ? m.message : "");
     if (done && done.type === "sync") syncAsked = false;
     if (done && done.type === "tick" && m.ok === false) tickHalted = true;
