@@ -135,6 +135,7 @@ def test_play_overlays_with_poles_stay_legible(ex):
 
 def test_focus_on_one_reaction(ex):
     assert ex.controls["focus"].options[:2] == ("all", "f₁")
+    box = ex.picture()["box"]
     ex.set(focus="f₅")
     legible(ex)
     pic = ex.picture()
@@ -146,8 +147,9 @@ def test_focus_on_one_reaction(ex):
     x = ex.state["reactions"][4]
     assert ex.readout_values["|f₅|"] == pytest.approx(np.hypot(*x.wrench[:2]))
     assert f"{ex.readout_values['|f₅|']:.4g} N" in els["f₅"]["desc"]
+    assert ex.picture()["box"] == pytest.approx(box, abs=1e-12)          # the focus keeps the view
     ex.set(focus="all")
-    assert ex.picture()["box"] == pytest.approx(ex.limits, abs=1e-3)
+    assert ex.picture()["box"] == pytest.approx(box, abs=1e-12)
     legible(ex)
 
 

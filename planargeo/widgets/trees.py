@@ -17,12 +17,13 @@ import numpy as np
 
 from planargeo import scenes
 from planargeo.draw.pictures._words import subscript
-from planargeo.draw.pictures.trees import symbol_of, trees_picture
+from planargeo.draw.pictures.trees import FORCE_LENGTH, symbol_of, trees_picture
 from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import Described, SceneTime, explorer_data, run_to, state_handle, time_value
+from planargeo.widgets._explorer import (Described, HeldView, SceneTime, explorer_data, run_to, state_handle,
+                                        time_value)
 from planargeo.widgets._motion import Budget
 from planargeo.widgets.base import Explorer, Step, Toggle, cached
 
@@ -47,10 +48,18 @@ T_END = 60.0
 #: evaluations of the dynamics one update may spend (~2 ms each under load; the default spends about
 #: 280 per scene second, 1,700 under gravity: one update reaches about 7 scene seconds)
 UPDATE_EVALS = 2_500
+#: room (m) around the links in the view of a pose: the largest force's arrow and its label
+ROOM = FORCE_LENGTH + 0.3
+#: the step (m) the view of a pose is rounded out to
+VIEW_STEP = 0.1
 
 
-class TreeExplorer(Described, SceneTime, Explorer):
+class TreeExplorer(HeldView, Described, SceneTime, Explorer):
     """The tree of Fig 9.1 and the constrained tree of Fig 9.2 with every pin and contact force, and Play.
+
+    The view holds the pose the controls set (at ``t = 0``), with room for the forces; once Play
+    has moved the links (``t > 0``, or while Play runs) it is :attr:`limits`, every pose the
+    links can reach, so that the motion stays in view.  A drag holds the view it began in.
 
     Parameters
     ----------
@@ -153,8 +162,8 @@ class TreeExplorer(Described, SceneTime, Explorer):
             new = near(math.degrees(math.atan2(y - base[1], x - base[0])), a2)
             return {"body 1 angle (deg)": (a1 + 180.0) % 360.0 - 180.0, "body 2 angle (deg)": new}
 
-        return [state_handle(self, "tip of body 1", lambda st: st["tips"][0], drag1),
-                state_handle(self, "tip of body 2", lambda st: st["tips"][1], drag2)]
+        return [state_handle(self, "tip of body 1", lambda st: st["tips"][0], self.holding(drag1)),
+                state_handle(self, "tip of body 2", lambda st: st["tips"][1], self.holding(drag2))]
 
     def mechanism_points(self):
         if self.state is None:
@@ -202,7 +211,41 @@ class TreeExplorer(Described, SceneTime, Explorer):
             return False
         return len(run["ck"]) <= last
 
+    def view_of(self, state) -> tuple[float, float, float, float]:
+        """The view of ``state``: its pose with room for the forces at ``t = 0``, else the reach.
+
+        Parameters
+        ----------
+        state : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        tuple
+            ``(x0, x1, y0, y1)`` (m) of the plot area's shape; at ``t = 0`` its centre and sizes on
+            :data:`VIEW_STEP`.
+        """
+        pc = getattr(self, "play_control", None)
+        moving = (state["t"] > 0.0 or getattr(self, "_exporting", False)
+                  or bool(pc is not None and pc.playing))
+        if moving:
+            return tuple(self.limits)
+        pts = np.vstack([[[0.0, 0.0]], state["sol"].data.pose[:, :2], state["tips"]])
+        lo, hi = pts.min(axis=0) - ROOM, pts.max(axis=0) + ROOM
+        (w, h), (ml, mr, mt, mb) = self.figure_px, (6, 6, 6, 6)     # trees_picture's margins
+        ratio = (h - mt - mb) / (w - ml - mr)
+        c, half = (lo + hi) / 2, (hi - lo) / 2
+        # the centre on the step, the half sizes out to it, then widened to the plot area's shape
+        cr = np.round(c / VIEW_STEP) * VIEW_STEP
+        half = np.ceil((half + np.abs(c - cr)) / VIEW_STEP - 1e-9) * VIEW_STEP
+        half = np.maximum(half, [half[1] / ratio, half[0] * ratio])
+        return tuple(round(float(v), 9) + 0.0 for v in (cr[0] - half[0], cr[0] + half[0], cr[1] - half[1],
+                                                          cr[1] + half[1]))
+
+    _fitted_view = view_of                  # (HeldView)
+
     def compute(self, values, changed):
+        self.drag_or_fit()              # a control, Play or reset: the view fits the state again
         # one solve (9.5 or 9.39-9.43); the pose at t = 0 depends on the two angles alone
         closed, model, key = self._run_key(values)
         _c, L, dof = self.geometry(closed)
@@ -234,7 +277,7 @@ class TreeExplorer(Described, SceneTime, Explorer):
         contacts = [c.name for c in state["model"].contacts] if state["closed"] else []
         return trees_picture(state["sol"].data.pose, state["tips"], reactions=state["reactions"], contacts=contacts,
                              v=state["sol"].data.v, a=state["a"], overlays=overlays, focus=vals.get("focus", "all"),
-                             view=view or self.limits, size=self.figure_px)
+                             view=view or self.held_view or self.view_of(state), size=self.figure_px)
 
     def readout_of(self, state):
         closed, model = state["closed"], state["model"]
