@@ -135,27 +135,31 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
     anchors = {"joint": w.pose[:, :2].tolist(), "link": np.asarray(w.com, float).tolist()}
     subs = [subscript(i + 1) for i in range(n)]
     on = split["active_on"].tolist() if split else [True] * n
+    point, line, conic = pic.point, pic.line, pic.conic
     for key, flag, sym, kind, per, role, color, meaning, eq, unit in LAYERS:
         if not overlays.get(flag) or key not in data:
             continue
         arr = data[key] if kind == "conic" else np.asarray(data[key], float).tolist()   # floats: cheap rows
         glyph, scale, at = key in ("v", "a"), 4.0 if key == "v" else 1.0, anchors[per]
         dash = [1.5, 2.5] if key == "TQ" else None
+        head = f"{meaning} ({eq}): "
         for i in range(n):
             if key == "TQ" and not on[i]:
                 continue
-            desc = f"{meaning} ({eq}): {_value(kind, arr[i], unit)}"
-            faded = focus is not None and focus != (per, i)
-            label, opacity = ("", FADED) if faded else (None, 1.0)
-            if kind == "point":
-                pic.point(f"{key}{i + 1}", arr[i], glyph=glyph, glyph_scale=scale, role=role, color=color,
-                          symbol=sym + subs[i], desc=desc, label=label, opacity=opacity)
-            elif kind == "line":
-                pic.line(f"{key}{i + 1}", arr[i], anchor=at[i], dash=dash and list(dash), role=role,
-                         color=color, symbol=sym + subs[i], desc=desc, label=label, opacity=opacity)
+            desc = head + _value(kind, arr[i], unit)
+            if focus is not None and focus != (per, i):
+                label, opacity = "", FADED
             else:
-                pic.conic(f"{key}{i + 1}", arr[i], role=role, color=color, symbol=sym + subs[i], desc=desc,
-                          label=label, opacity=opacity)
+                label, opacity = None, 1.0
+            if kind == "point":
+                point(f"{key}{i + 1}", arr[i], glyph=glyph, glyph_scale=scale, role=role, color=color,
+                      symbol=sym + subs[i], desc=desc, label=label, opacity=opacity)
+            elif kind == "line":
+                line(f"{key}{i + 1}", arr[i], anchor=at[i], dash=dash and list(dash), role=role,
+                     color=color, symbol=sym + subs[i], desc=desc, label=label, opacity=opacity)
+            else:
+                conic(f"{key}{i + 1}", arr[i], role=role, color=color, symbol=sym + subs[i], desc=desc,
+                      label=label, opacity=opacity)
     if time is not None:
         x1, y0 = pic.box[1], pic.box[2]
         pic.text("time", (x1, y0), f"t = {time:.2f} s", ha="right", va="bottom", dx=-6.0, dy=4.0,

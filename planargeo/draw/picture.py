@@ -61,6 +61,41 @@ FAR = 1e6
 _BELOW_LINE_PX, _BELOW_PAD_PX = 14.0, 4.0
 
 
+def _round_floats(values: list, n: int) -> list:
+    """``[round(v, n) for v in values]`` for a list of Python floats: the same numbers, in one pass.
+
+    ``round`` gives the double nearest to the decimal ``r·10⁻ⁿ``, ``r`` the integer nearest to the
+    exact ``v·10ⁿ`` (ties to even); so does the division ``r / 10ⁿ``, correctly rounded, ``r`` and
+    ``10ⁿ`` being exact (``|r| < 2⁴⁰``, ``n ≤ 22``).  The product ``v·10ⁿ`` in floating point is
+    within ``|v·10ⁿ|·2⁻⁵³`` of the exact one, so it can round the other way only that close to a
+    half: such values, and any out of that range or not finite, are left to ``round`` itself.  A
+    zero keeps ``v``'s sign, as with ``round``.
+
+    Examples
+    --------
+    >>> v = [0.1234567, -0.0001, 2.675, 1e300, float("nan"), 12.5, -3.14159, 7.0]
+    >>> all(repr(a) == repr(round(x, 3)) for a, x in zip(_round_floats(v, 3), v))
+    True
+    """
+    if not 0 <= n <= 22 or len(values) < 8:
+        return [round(v, n) for v in values]
+    x = np.array(values, dtype=float)
+    p = float(10 ** n)
+    with np.errstate(invalid="ignore", over="ignore"):
+        y = x * p
+        out = np.copysign(np.rint(y) / p, x).tolist()
+        ay = np.abs(y)
+        sure = (np.abs(y - np.floor(y) - 0.5) > ay * 1e-15) & (ay < _ROUND_LIMIT)
+    if not sure.all():
+        for i in np.flatnonzero(~sure).tolist():
+            out[i] = round(values[i], n)
+    return out
+
+
+#: ``|v·10ⁿ|`` below which :func:`_round_floats` divides (its integers exact)
+_ROUND_LIMIT = 2.0 ** 40
+
+
 def nice_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
     """About ``n`` round tick values (1, 2, 5 × 10ᵏ apart) between ``lo`` and ``hi``.
 
@@ -216,6 +251,8 @@ def plain_text(s: str) -> str:
 
 #: The roles an element may have: the style table's (:mod:`planargeo.draw.style`).
 ROLES = frozenset(COLORS) | frozenset(STYLES) | frozenset(LINEWIDTHS)
+#: each role's line width in pixels
+_WIDTHS = {role: round(LINEWIDTHS.get(role, 1.3) * PX_PER_PT, 2) for role in ROLES}
 
 
 def _three(id, v, what: str) -> tuple[float, float, float]:
@@ -240,10 +277,16 @@ def _color(role: str, color: str | None) -> str:
 
 
 def _dash(role: str):
+    if role in _DASHES:                  # a new list each time (an element's own)
+        d = _DASHES[role]
+        return None if d is None else list(d)
     ls = STYLES.get(role, {}).get("linestyle")
-    if isinstance(ls, tuple):
-        return [round(v * PX_PER_PT, 2) for v in ls[1]]
-    return None
+    _DASHES[role] = d = [round(v * PX_PER_PT, 2) for v in ls[1]] if isinstance(ls, tuple) else None
+    return None if d is None else list(d)
+
+
+#: each role's dash pattern in pixels (:func:`_dash`, worked out once)
+_DASHES: dict = {}
 
 
 def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom", along=None) -> dict:
@@ -253,7 +296,7 @@ def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom", along=None) -
     placer's, left out of the data).
     """
     part = {"p": "text", "x": float(x), "y": float(y), "dx": float(dx), "dy": float(dy),
-            "text": plain_text(text), "ha": ha, "va": va}
+            "text": text if type(text) is str and "$" not in text else plain_text(text), "ha": ha, "va": va}
     if along is not None:
         part["along"] = (float(along[0]), float(along[1]))
     return part
@@ -273,6 +316,7 @@ _documented = entries(_ENTRIES)
 
 #: element keys left out of the data when they hold these values
 _DEFAULTS = {"dash": None, "fill": None, "alpha": 1.0, "opacity": 1.0, "desc": "", "symbol": ""}
+_DEFAULT_ITEMS = tuple(_DEFAULTS.items())
 
 
 class Picture:
@@ -416,9 +460,11 @@ class Picture:
         if id in self._ids:
             raise InputError(f"element id {id!r} is used twice in one picture")
         self._ids.add(id)
-        el = {"id": id, "role": role, "symbol": plain_text(symbol or ""), "desc": plain_text(desc or ""),
-              "color": color, "width": round(width if width is not None else
-                                             LINEWIDTHS.get(role, 1.3) * PX_PER_PT, 2),
+        # (plain_text of a str without mathtext is the str itself)
+        el = {"id": id, "role": role,
+              "symbol": symbol if type(symbol) is str and "$" not in symbol else plain_text(symbol or ""),
+              "desc": desc if type(desc) is str and "$" not in desc else plain_text(desc or ""),
+              "color": color, "width": _WIDTHS[role] if width is None else round(width, 2),
               "dash": dash, "fill": fill, "alpha": alpha, "z": z, "opacity": opacity, "parts": parts}
         self.elements.append(el)
         return el
@@ -774,38 +820,46 @@ class Picture:
             return v
 
         elements = []
+        add_element = elements.append
         paths: list[tuple[dict, np.ndarray]] = []   # (n, 2) float paths, rounded together below
+        add_path = paths.append
+        float_, ndarray, f64 = float, np.ndarray, np.float64
         for el in sorted(self.elements, key=itemgetter("z")):
             parts = []
+            add = parts.append
             x0 = y0 = rx = ry = None     # the last point rounded (a pole's marker, glyph and label share it)
             for part in el["parts"]:
+                part = part.copy()
                 x = part.get("x")
                 if x is not None:
                     y = part["y"]
                     if x is not x0 or y is not y0:
                         x0, y0 = x, y
-                        rx = round(x, nd) + 0.0 if type(x) is float else rnd(x)
-                        ry = round(y, nd) + 0.0 if type(y) is float else rnd(y)
-                    part = {**part, "x": rx, "y": ry}
+                        rx = round(x, nd) + 0.0 if type(x) is float_ else rnd(x)
+                        ry = round(y, nd) + 0.0 if type(y) is float_ else rnd(y)
+                    part["x"] = rx
+                    part["y"] = ry
                     if "along" in part:
                         del part["along"]
-                else:
-                    part = dict(part)
                 if "xy" in part:
                     xy = part["xy"]
-                    if type(xy) is np.ndarray and xy.dtype == np.float64 and xy.ndim == 2 and xy.shape[1] == 2:
-                        paths.append((part, xy))
+                    if type(xy) is ndarray and xy.dtype == f64 and xy.ndim == 2 and xy.shape[1] == 2:
+                        add_path((part, xy))
                     else:
                         part["xy"] = rnd(xy)
                 if "m" in part:
                     part["m"] = [round(v, nd + 2) + 0.0 for v in part["m"]]
-                parts.append(part)
+                add(part)
             # keys at their defaults are left out (the renderers read them with defaults), and
-            # "obstacle" (the label placer's, Picture.text)
-            out = {k: v for k, v in el.items()
-                   if k != "obstacle" and (k not in _DEFAULTS or not v == _DEFAULTS[k])}
+            # "obstacle" (the label placer's, Picture.text); the others keep their order
+            out = el.copy()
+            for k, v in _DEFAULT_ITEMS:
+                if k in out and out[k] == v:
+                    del out[k]
+            if "obstacle" in out:
+                del out["obstacle"]
             out["parts"] = parts
-            elements.append(out)
+            add_element(out)
         if paths:   # one np.round for all paths (elementwise: the same numbers as one by one)
             rows = np.round(np.concatenate([xy for _, xy in paths]), nd)
             rows += 0.0
