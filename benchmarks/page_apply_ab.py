@@ -186,7 +186,9 @@ def voila(old: str, new: str, rounds: int, block: int, sync_s: dict | None = Non
         root.mkdir()
         cells = ["import planargeo.widgets as pw"]
         for k, js in (("A", old), ("B", new)):
-            (tmp / f"{k}.js").write_text(js)
+            # each module marks the views it draws (its widget's element: data-pg-module)
+            tag = f"export default {{ render: (o) => {{ o.el.dataset.pgModule = {k!r}; return render(o); }} }};"
+            (tmp / f"{k}.js").write_text(js.replace("export default { render };", tag))
             own = f"\nchain{k}.drag_sync_s = {sync_s[k]!r}" if (sync_s or {}).get(k) is not None else ""
             cells.append(f"chain{k} = {make}\nchain{k}.canvas._esm = open({str(tmp / f'{k}.js')!r}).read()"
                          f"{own}\nchain{k}")
@@ -203,9 +205,8 @@ def voila(old: str, new: str, rounds: int, block: int, sync_s: dict | None = Non
                 cv = ex.locator(".pg-canvas").first
                 cv.wait_for(state="visible", timeout=60_000)
                 pl._until(cv, "p.elements() > 0 && !p.busy()", 60_000)
-                # B's module keeps the attributes it wrote on the nodes: each view runs its own module
-                marked = cv.evaluate("(el) => !!el.querySelector('.pg-el > *').__pgAttrs")
-                if old != new and marked != (k == "B"):
+                marked = cv.evaluate("(el) => el.closest('[data-pg-module]')?.dataset.pgModule")
+                if marked != k:
                     raise RuntimeError(f"the view {k} does not run module {k}")
                 views[k] = cv
             for r in range(rounds + 1):
