@@ -38,8 +38,12 @@ def _key_and_curves(pic):
     return box, frame, curves
 
 
-@pytest.mark.parametrize("state", STATES, ids=lambda s: ", ".join(f"{k}={v}" for d in (s if isinstance(s, tuple) else (s,))
-                                                       for k, v in d.items()) or "default")
+def _id(state) -> str:
+    return ", ".join(f"{k}={v}" for d in (state if isinstance(state, tuple) else (state,))
+                     for k, v in d.items()) or "default"
+
+
+@pytest.mark.parametrize("state", STATES, ids=_id)
 def test_the_key_covers_no_point_and_no_line_of_the_chart(state):
     ex = ArticulatedExplorer(display="agg")
     for step in state if isinstance(state, tuple) else (state,):

@@ -23,8 +23,8 @@ import numpy as np
 from planargeo.draw.picture import plain_text
 from planargeo.geometry.projective import direction, is_ideal, to_xy
 
-__all__ = ["QuantityText", "Decimals", "scene_decimals", "fixed", "fmt", "unit_text", "point_text", "point_value", "value_text", "value_texts",
-           "split_units", "explain_html", "is_numeric", "plain_symbol"]
+__all__ = ["QuantityText", "Decimals", "scene_decimals", "fixed", "fmt", "unit_text", "point_text", "point_value",
+           "value_text", "value_texts", "split_units", "explain_html", "is_numeric", "plain_symbol"]
 
 #: units that mean "dimensionless": nothing is written
 NO_UNIT = ("", "—", "-")

@@ -22,7 +22,8 @@ from .conftest import ARTIFACTS, VoilaServer, write_notebook
 
 pytestmark = pytest.mark.browser
 
-STRIP_JS = r"""(el) => { el.dataset.keep = el.innerHTML; el.innerHTML = el.innerHTML.replace(/[\u0300-\u036f]/g, ''); }"""
+STRIP_JS = r"""(el) => { el.dataset.keep = el.innerHTML;
+                         el.innerHTML = el.innerHTML.replace(/[\u0300-\u036f]/g, ''); }"""
 BACK_JS = r"""(el) => { el.innerHTML = el.dataset.keep; delete el.dataset.keep; }"""
 
 
