@@ -39,7 +39,7 @@ ARROW = 0.5
 _SUB = "₁₂"
 
 #: the heading row above the identity checks
-CHECKS_HEADING = "checks: thesis identities of s, R, T, U"
+CHECKS_HEADING = "identity checks of s, R, T, U (each reads 0)"
 #: residual of the scene -> (readout row, unit, why it must read 0), kept as data
 CHECK_ROWS = {k: tuple(v) for k, v in explorer_data("subspace")["checks"].items()}
 
@@ -149,7 +149,7 @@ class SubspaceExplorer(Explorer):
                  ("joint's push −Rμ, |force|", float(np.hypot(reaction[0], reaction[1])), "N")]
         if k == 2:
             rows.append(("U (meet of T₁, T₂)", point_value(st["U"][:, 0]), "m"))
-        rows.append((CHECKS_HEADING, "each must read 0", "—"))
+        rows.append((CHECKS_HEADING, "", "—"))        # a heading: no value
         rows += [(CHECK_ROWS[name][0], val, CHECK_ROWS[name][1]) for name, val in st["residuals"].items()]
         self.units = {key: unit for key, _v, unit in rows if unit is not None}
         return {key: v for key, v, _u in rows}
