@@ -3,7 +3,7 @@
 The reference is written here from scratch: every body's acceleration (a twist at the origin)
 and every pin's force ``λ_j`` (a force through the pin, reaction basis ``R_j = [[1, 0], [0, 1],
 [-y_j, x_j]]``) from ``M a - Gᵀ λ = w``, ``G a = 0`` (at rest: no velocity terms), with the
-couple ``-f_{n+1} = [0, 0, -τ]`` on the tip and gravity through each centre of mass.  The force
+couple ``τ`` of the slider on the tip (counter-clockwise positive: ``-f_{n+1} = [0, 0, τ]``, 7.44) and gravity through each centre of mass.  The force
 of joint ``j`` on body ``j`` is ``f_j = R_j λ_j`` (thesis 7.33).
 """
 from __future__ import annotations
@@ -50,9 +50,9 @@ def kkt_solve(n, rho, phi, loads, g=0.0, L=1.0, m=1.0):
 
 
 def kkt_pinned_chain(n, rho, phi, tau, g=0.0):
-    """The chain with the couple ``-f_{n+1} = [0, 0, -tau]`` on the tip (7.44)."""
+    """The chain with the couple ``tau`` (counter-clockwise) on the tip: ``-f_{n+1} = [0, 0, tau]`` (7.44)."""
     loads = np.zeros((n, 3))
-    loads[-1, 2] = -tau
+    loads[-1, 2] = tau
     return kkt_solve(n, rho, phi, loads, g)
 
 
@@ -134,11 +134,9 @@ def test_drag_split_marker_and_tip():
 def test_bad_input_keeps_the_last_good_state():
     ex = SplittingExplorer(display="agg")
     shown = dict(ex.readout_values)
-    ex.set(**{"couple τ (N·m)": 0.0})
-    assert "couple τ must be non-zero" in ex.message
-    assert ex.values["couple τ (N·m)"] == 1.0 and ex.readout_values == shown
     ex.set(**{"bodies n": 1})
     assert "bodies n must be an integer between 2 and 8" in ex.message
+    assert ex.values["bodies n"] == 2 and ex.readout_values == shown
     with pytest.raises(SceneError, match="split must be between 1 and n - 1"):
         scenes.build("splitting", n=3, split=3)
     with pytest.raises(SceneError, match="n must be at least 2"):
@@ -207,3 +205,76 @@ def test_hover_texts_count_bodies_and_pins_in_good_english():
     assert d["pins"] == "the joints between the bodies: 4 pins, L = 1 m apart"
     assert d["lower"].endswith("bodies 1…2, of 1 kg each") and d["upper"].endswith("bodies 3…5, of 1 kg each")
     assert not any(" 1 pins" in t or "1 kg each" in t and "bodies" not in t for t in d.values())
+
+
+def lagrange_qdd_at_rest(n, rho, phi, tau, g=0.0, L=1.0, m=1.0):
+    """Joint accelerations of the pinned bent chain at rest from Lagrange's equations ``H q̈ = Q``.
+
+    At rest the velocity terms vanish.  ``H = Σ m J_cᵀ J_c + m ρ² J_θᵀ J_θ`` from the Jacobians of each
+    centre of mass and each body angle in the relative joint angles; ``Q`` is the virtual work of the
+    couple ``τ`` on the tip (``τ ∂θ_n/∂q``) and of gravity (``-m g ∂y_c/∂q``).
+    """
+    q = np.array([0.0] + [phi] * (n - 1))
+    th = np.cumsum(q)
+    H, Q = np.zeros((n, n)), np.zeros(n)
+    for b in range(n):
+        Jth = np.array([1.0 if k <= b else 0.0 for k in range(n)])     # θ_b = q_1 + ... + q_b
+        Jc = np.zeros((2, n))
+        for k in range(n):                     # d c_b / d q_k: the part of the chain beyond joint k turns
+            for j in range(k, b + 1):
+                r = L if j < b else L / 2
+                Jc[:, k] += r * np.array([-np.sin(th[j]), np.cos(th[j])])
+        H += m * Jc.T @ Jc + m * rho * rho * np.outer(Jth, Jth)
+        Q += -m * g * Jc[1]
+        if b == n - 1:
+            Q += tau * Jth
+    return np.linalg.solve(H, Q)
+
+
+def test_lagrange_two_links_closed_form_by_sympy():
+    """Issue: "couple τ on the tip 1.00" applied −1 N·m.  Lagrange's equations of two links, derived with sympy
+    (``T`` of both bodies, ``Q = τ ∂θ₂/∂q``), at rest: ``H q̈ = (τ, τ)`` with
+    ``H = m/4 [[6L² + 4L² cos q₂ + 8ρ², L²(1 + 2 cos q₂) + 4ρ²], [same, L² + 4ρ²]]``.
+    For m = 1, L = 1, ρ = 0.5, φ = 45°, τ = +1 N·m: q̈ = (−0.5657, +2.9657) rad/s² (sympy: -0.565685424949238,
+    2.96568542494924)."""
+    c = math.cos(math.pi / 4)
+    H = np.array([[6 + 4 * c + 2, 1 + 2 * c + 1], [1 + 2 * c + 1, 1 + 1]]) / 4
+    ref = np.linalg.solve(H, [1.0, 1.0])
+    np.testing.assert_allclose(ref, [-0.565685424949238, 2.96568542494924], atol=1e-12)
+    np.testing.assert_allclose(lagrange_qdd_at_rest(2, 0.5, math.pi / 4, 1.0), ref, atol=1e-12)
+    ex = SplittingExplorer(display="agg")
+    assert ex.values["couple τ (N·m)"] == 1.0
+    np.testing.assert_allclose(ex.readout_values["q̈ (6.110)"], ref, atol=1e-12)
+    assert ex.readout_values["aₙ (tip)"][2] == pytest.approx(sum(ref), abs=1e-12)   # body 2 turns at q̈₁ + q̈₂ > 0
+    desc = {e["id"]: e["desc"] for e in ex.picture()["elements"]}
+    assert desc["couple"].endswith(": 1 N·m (counter-clockwise)"), desc["couple"]
+
+
+@pytest.mark.parametrize("n, tau, g, phi_deg", [(2, -2.5, 0.0, 120.0), (3, 1.0, 0.0, 35.0), (5, -0.5, 9.81, -60.0),
+                                                 (8, 3.0, 2.0, 20.0)])
+def test_slider_couple_is_the_couple_on_the_tip_by_lagrange(n, tau, g, phi_deg):
+    ex = SplittingExplorer(display="agg", **{"bodies n": n, "couple τ (N·m)": tau, "g (m/s²)": g,
+                                            "bend φ (deg)": phi_deg, "ρ (m)": 0.5})
+    assert ex.message == ""
+    ref = lagrange_qdd_at_rest(n, 0.5, math.radians(phi_deg), tau, g)
+    np.testing.assert_allclose(ex.readout_values["q̈ (6.110)"], ref, atol=1e-10 * (1 + np.abs(ref).max()))
+
+
+def test_no_couple_is_an_ordinary_state_drawn_at_rest():
+    """τ = 0 with g = 0: nothing moves, every pole is "none", the mobilities and their centre are still shown;
+    a keyboard user steps from +0.05 through 0 to −0.05."""
+    ex = SplittingExplorer(display="agg")
+    lam = ex.readout_values["row 3 of Λᵢ⁻¹"]
+    for tau in (0.05, 0.0, -0.05):
+        ex.set(**{"couple τ (N·m)": tau})
+        assert ex.message == "" and ex.values["couple τ (N·m)"] == tau
+    ex.set(**{"couple τ (N·m)": 0.0})
+    r = ex.readout_values
+    assert r["q̈ (6.110)"] == (0.0, 0.0) and r["fᵢ₊₁ (7.56)"] == (0.0, 0.0, 0.0)
+    assert r["pole of aᵢ"] == r["pole of aᵢ₊₁"] == "none: no acceleration"
+    assert "x/L of aₙ's pole (7.48)" not in r and r["x/L closed form"] == pytest.approx(1.2357022603955)
+    assert r["row 3 of Λᵢ⁻¹"] == lam                                   # the mobility does not depend on the load
+    els = elements(ex.picture())
+    assert "centre" in els and "a1" in els and "a2" in els
+    assert "no couple" in els["couple"]["desc"]
+    _legible(ex)

@@ -81,7 +81,8 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
             "split at joint": Step(2, NMAX, 1, 2, "split at joint i+1", integer=True),
             "ρ (m)": Step(0.05, 2.0, 0.01, 0.5, "ρ (m), L = 1"),
             "bend φ (deg)": Step(-180.0, 180.0, 0.5, 45.0, "bend φ (deg)"),
-            "couple τ (N·m)": Step(-5.0, 5.0, 0.05, 1.0, "couple τ on the tip (N·m)"),
+            "couple τ (N·m)": Step(-5.0, 5.0, 0.05, 1.0, "couple τ on the tip (N·m)",
+                                   tip="the couple on the tip, counter-clockwise positive; 0: no couple"),
             "g (m/s²)": Step(0.0, 9.81, 0.01, 0.0, "g (m/s²)"),
             "mobility centres": W.Checkbox(value=True, description="mobility centres"),
             # the focus made here: an ordinary control, not a display control of the base
@@ -103,7 +104,8 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
         i = min(int(self.values["split at joint"]), n) - 1
         return {
             **self.symbols,
-            "−fₙ₊₁ on the tip": "the couple on the tip, from a fictitious joint n+1 (eq. 7.44); in the figure: "
+            "−fₙ₊₁ on the tip": "the couple τ on the tip (counter-clockwise positive), from a fictitious joint n+1 "
+                                "(eq. 7.44: it pushes the tip with −fₙ₊₁ = [0, 0, τ]); in the figure: "
                                 f"−f{subscript(n + 1)} on the tip: couple (line at ∞)",
             "aⱼ": ("acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6); in the "
                    "figure: " + ", ".join(f"a{subscript(j)}" for j in range(1, n + 1))),
@@ -132,13 +134,11 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
     def compute(self, values, changed):
         n, split = int(values["bodies n"]), int(values["split at joint"]) - 1
         rho, phi, tau = float(values["ρ (m)"]), math.radians(values["bend φ (deg)"]), float(values["couple τ (N·m)"])
-        if tau == 0.0 and float(values["g (m/s²)"]) == 0.0:
-            from planargeo.errors import InputError
-
-            raise InputError("couple τ must be non-zero without gravity: with τ = 0 N·m and g = 0 m/s² "
-                             "nothing would move. Choose τ ≠ 0 or g > 0.")
         q = np.array([0.0] + [phi] * (n - 1))
-        st = splitting_state(self._model(n, rho, float(values["g (m/s²)"])), q, split, tau)
+        # the slider's τ is the couple on the tip, counter-clockwise positive: the fictitious joint n+1
+        # pushes the tip with −f_{n+1} (3.1, 7.44), so f_{n+1} = [0, 0, −τ].  τ = 0 (and g = 0) is an
+        # ordinary state: no load, the chain stays at rest, its mobilities are still those shown.
+        st = splitting_state(self._model(n, rho, float(values["g (m/s²)"])), q, split, -tau)
         st.update(n=n, split=split, rho=rho, phi=phi, tau=tau)
         return st
 
@@ -178,16 +178,17 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
             "q̈ (6.110)": _vec(state["qdd"]),
         }
         a_n = state["a"][-1]
-        if n == 2 and float(self.values["g (m/s²)"]) == 0.0 and a_n[2] != 0:
-            out["x/L of aₙ's pole (7.48)"] = float(-a_n[1] / a_n[2])
+        if n == 2 and float(self.values["g (m/s²)"]) == 0.0:
+            if twist_pole(a_n) is not None:                # τ = 0: no acceleration, no pole
+                out["x/L of aₙ's pole (7.48)"] = float(-a_n[1] / a_n[2])
             out["x/L closed form"] = x_over_L_7_48(state["rho"], 1.0, state["phi"])
             out["η = L/ρ (7.49)"] = 1.0 / state["rho"]
         return out
 
 
 def _vec(a) -> tuple:
-    """A vector as a tuple of plain floats (the readout's)."""
-    return tuple(float(x) for x in np.asarray(a, dtype=float))
+    """A vector as a tuple of plain floats (the readout's; no "−0": a zero load gives zeros)."""
+    return tuple(float(x) + 0.0 for x in np.asarray(a, dtype=float))
 
 
 def _pole_text(a) -> str:

@@ -81,15 +81,19 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
     fs = f"f{subscript(i + 1)}"
     labelled_line(pic, "f", f, fs, role="reaction", symbol=fs, anchor=pts[i], ahead=0.3,
                   desc=f"force of the split joint {i + 1} on body {i + 1}, its line of action (7.56): {force(f)}")
-    tip = -np.asarray(st["f_tip"], float)
+    tip = -np.asarray(st["f_tip"], float)                 # the fictitious joint n+1 pushes the tip with −f_{n+1}
+    turn = ("no couple: the tip is free" if tip[2] == 0.0 else
+            "counter-clockwise" if tip[2] > 0 else "clockwise")
     pic.line("couple", tip, role="wrench", symbol=f"−f{subscript(n + 1)}", label=f"−f{subscript(n + 1)} on the tip",
-             desc=f"the couple on the tip from a fictitious joint n+1 (7.44): {num(tip[2])} N·m")
+             desc=f"the couple τ on the tip, −f{subscript(n + 1)} from a fictitious joint {n + 1} (7.44): "
+                  f"{num(tip[2])} N·m ({turn})")
     poles = [twist_pole(a) for a in st["a"]]
     hide = None
     if poles[i - 1] is None and poles[i] is None:          # both translate the same way: one arrow says it
         u, w = st["a"][i - 1][:2], st["a"][i][:2]
-        if abs(u[0] * w[1] - u[1] * w[0]) <= 0.2 * np.hypot(*u) * np.hypot(*w):
-            hide = i
+        nu, nw = np.hypot(*u), np.hypot(*w)
+        if nu > 0 and nw > 0 and abs(u[0] * w[1] - u[1] * w[0]) <= 0.2 * nu * nw:
+            hide = i                                       # (no acceleration at all: each says "none")
     for b in range(n):
         if b == hide:
             continue
