@@ -19,7 +19,10 @@ STATES = [{}, {"outboard bodies": 1}, {"outboard bodies": 0}, {"bodies n": 2}, {
           {"bodies n": 8, "λ = L/ρ": 8.0}, {"bodies n": 8, "λ = L/ρ": 0.5}, {"bend φ (deg)": 0.0},
           {"bend φ (deg)": 90.0}, {"bend φ (deg)": 180.0}, {"bend φ (deg)": -120.0, "base θ₁ (deg)": 45.0},
           ({"bodies n": 6}, {"focus": "body 3"}), ({"bodies n": 8}, {"focus": "body 7"}), {"rigid inertias": False},
-          {"bodies n": 5, "bend φ (deg)": 10.0, "λ = L/ρ": 1.0}]
+          {"bodies n": 5, "bend φ (deg)": 10.0, "λ = L/ρ": 1.0},
+          # no corner free: the values' axis raised, the key above the curves
+          {"bodies n": 8, "λ = L/ρ": 4.54, "bend φ (deg)": -177.0, "outboard bodies": 1},
+          ({"bodies n": 8, "λ = L/ρ": 5.05, "bend φ (deg)": 169.0, "outboard bodies": 4}, {"focus": "body 5"})]
 
 
 def _key_and_curves(pic):
