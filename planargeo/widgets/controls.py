@@ -67,10 +67,36 @@ def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
     return cache[key]
 
 
-class FloatSlider(W.FloatSlider):
+#: a slider's state the page's slider applies only in a change of the model it did not touch itself
+VIEW_KEYS = ("disabled", "orientation", "readout")
+
+
+class _PageSlider:
+    """A slider whose ``disabled`` (``readout``, ``orientation``) reaches the page in a message of its
+    own, after the value.
+
+    The page's slider (ipywidgets 8.1) applies ``disabled`` in its ``update``, which it skips for a
+    change it made itself.  Set to a new value, it writes back its copy of the value rounded to its
+    grid (60 came back as 59.99999999999997 on a step of 5 from −180), within the change that brought
+    the value; Backbone then reports that whole change as the slider's own, and a ``disabled`` sent
+    with the value is kept in the model but never drawn: the slider stays greyed (or live) as before.
+    Sent alone, no value is set and nothing is skipped.
+    """
+
+    def send_state(self, key=None):
+        keys = list(self.keys if key is None else [key] if isinstance(key, str) else key)
+        view = [k for k in keys if k in VIEW_KEYS]
+        if not view or len(view) == len(keys):
+            return super().send_state(keys)
+        super().send_state([k for k in keys if k not in VIEW_KEYS])
+        return super().send_state(view)
+
+
+class FloatSlider(_PageSlider, W.FloatSlider):
     """A float slider that keeps a value outside its range, for the explorer to refuse by name.
 
     A value the page sets is not echoed back to it (``echo_update=False``): the page shows it.
+    Its ``disabled`` goes to the page in a message of its own (:class:`_PageSlider`).
     """
 
     value = traitlets.CFloat(0.0, help="Float value").tag(sync=True, echo_update=False)
@@ -80,7 +106,7 @@ class FloatSlider(W.FloatSlider):
         return proposal["value"]
 
 
-class IntSlider(W.IntSlider):
+class IntSlider(_PageSlider, W.IntSlider):
     """An integer slider that keeps a value outside its range (see :class:`FloatSlider`)."""
 
     value = traitlets.CInt(0, help="Int value").tag(sync=True, echo_update=False)

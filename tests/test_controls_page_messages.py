@@ -1,0 +1,70 @@
+"""What the kernel sends the page about a slider: its ``disabled`` in a message without its value.
+
+The page's slider (ipywidgets 8.1) draws ``disabled`` in an update it skips for a change it made
+itself; given a value, it writes back its copy rounded to its grid within the same change, so a
+``disabled`` sent with the value stayed undrawn (the student's review: "direction of F₁" greyed in
+wrench addition after twist addition had disabled it).  Measured here on the messages themselves, as
+the page would receive them; the page's own drawing is checked in
+tests/browser/test_construction_enabled.py.
+"""
+from __future__ import annotations
+
+from planargeo.widgets import ConstructionExplorer
+from planargeo.widgets.controls import Step
+
+
+class Comm:
+    """A comm that keeps what the widget sends (as the page would receive it)."""
+
+    comm_id = "recorder"
+    kernel = object()
+
+    def __init__(self):
+        self.sent = []
+
+    def send(self, data=None, buffers=None):
+        self.sent.append(data)
+
+    def on_msg(self, callback):
+        pass
+
+    def close(self, *a, **k):
+        pass
+
+
+def _states(comm):
+    return [m["state"] for m in comm.sent if m.get("method") == "update"]
+
+
+def test_a_sliders_disabled_and_value_go_in_separate_messages_value_first():
+    w = Step(-180, 180, 5, 0.0, "direction (deg)").make("angle")
+    w.disabled = True
+    w.comm = comm = Comm()
+    with w.hold_sync():
+        w.value = 60.0
+        w.disabled = False
+        w.description = "direction of F₁ (deg)"
+    states = _states(comm)
+    assert not [s for s in states if "value" in s and "disabled" in s], states
+    assert states[-1] == {"disabled": False}, states
+    assert states[0]["value"] == 60.0 and states[0]["description"] == "direction of F₁ (deg)"
+
+
+def test_a_disabled_state_alone_is_one_message():
+    w = Step(0, 10, 1, 3, "n", integer=True).make("n")
+    w.comm = comm = Comm()
+    w.disabled = True
+    assert _states(comm) == [{"disabled": True}]
+
+
+def test_switching_construction_enables_the_direction_slider_in_a_message_of_its_own():
+    ex = ConstructionExplorer()                      # twist addition: u₁ = 0, its direction disabled
+    w = ex.controls["angle1"]
+    assert w.disabled
+    w.comm = comm = Comm()
+    ex.set(construction="wrench_sum")
+    assert not w.disabled
+    states = _states(comm)
+    with_disabled = [s for s in states if "disabled" in s]
+    assert with_disabled and with_disabled[-1] == {"disabled": False}, states
+    assert not [s for s in states if "value" in s and "disabled" in s], states
