@@ -21,8 +21,9 @@ from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, cha
 from planargeo.errors import ShapeError
 from planargeo.scenes.articulated import articulated_state, inertia_at, percussion_axes
 from planargeo.widgets._motion import Motion
-from planargeo.widgets._explorer import ChainBodies, Described, state_handle, time_step, xy_handle
+from planargeo.widgets._explorer import ChainBodies, Described, HeldView, state_handle, time_step, xy_handle
 from planargeo.widgets.base import Explorer, Step, cached, point_text
+from planargeo.widgets.handles import Handle
 from planargeo.widgets.controls import widen
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
@@ -121,7 +122,7 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
     return float(phi)
 
 
-class ArticulatedExplorer(Described, ChainBodies, Explorer):
+class ArticulatedExplorer(HeldView, Described, ChainBodies, Explorer):
     """Rigid and articulated inertias of a chain as conics, their axes of percussion and convergence.
 
     Parameters
@@ -213,8 +214,11 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
                 return {}
             return {"base θ₁ (deg)": float(math.degrees(math.atan2(y, x)))}
 
-        return [xy_handle(self, "pole a", "pole x", "pole y"), self._tip_handle(bend_for_tip, "base θ₁ (deg)"),
-                state_handle(self, "first body", lambda st: st["joints"][1], base_drag)]
+        # each held: the view shown when a drag begins stays until its release (re-fitted at each step,
+        # it moved under the pointer and the dragged handle ran away from it)
+        handles = [xy_handle(self, "pole a", "pole x", "pole y"), self._tip_handle(bend_for_tip, "base θ₁ (deg)"),
+                   state_handle(self, "first body", lambda st: st["joints"][1], base_drag)]
+        return [Handle(h.name, h.where, self.holding(h.drag)) for h in handles]
 
     def focus_options(self):
         # before the first state every body of the longest chain (a focus given with "bodies n")
@@ -252,6 +256,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
     def compute(self, values, changed):
         from planargeo.simulate.integrate import energy
 
+        self.drag_or_fit()              # a control, Play or reset: the view fits the state again
         n, lam = int(values["bodies n"]), float(values["λ = L/ρ"])
         t = float(values[TIME])
         motion = self._motion(values)
@@ -299,11 +304,13 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         box = fit_box(np.vstack(pts), margin=0.1)
         return chain_view(box, self.figure_px, MARGIN)
 
+    _fitted_view = _view                  # (HeldView)
+
     def scene_picture(self, state, view=None):
         v = self.values
         return articulated_picture(state, k=self._focus_k(state["n"]), focus_all=v.get("focus", "all") == "all",
                                    rigid=bool(v["rigid inertias"]), axes=bool(v["percussion axes"]),
-                                   view=view or self._view(state), size=self.figure_px)
+                                   view=view or self.held_view or self._view(state), size=self.figure_px)
 
     def readout_of(self, state):
         v = self.values
