@@ -10,7 +10,10 @@ same idle pause as :mod:`page_latency`):
   callbacks, garbage collection, message parsing, idle;
 * the websocket frames per step in each direction, by Jupyter message type (and, for
   ``comm_msg``, by the widget's method: ``update``, ``custom``, ``echo_update``);
-* the step latencies themselves (as :mod:`page_latency` measures them).
+* the step latencies themselves (as :mod:`page_latency` measures them);
+* each request (drag step, ping) split by what the page did (:func:`request_steps`): until its
+  reply's task, that task, the wait for the frame (and the tasks that ran first, e.g. the
+  controls' syncs), and the frame's own work.
 
 The script's source comes from a V8 sampling profile taken over the same steps (self time
 of each sample's top frame, by its script's URL); the rest from the trace's events
@@ -187,6 +190,72 @@ def _classify(payload) -> str:
     return kind
 
 
+def _main_thread(events: list[dict]):
+    """(pid, tid) of the busiest renderer main thread."""
+    mains = {(e["pid"], e["tid"]) for e in events
+             if e.get("ph") == "M" and e.get("name") == "thread_name" and e["args"].get("name") == "CrRendererMain"}
+    busy: dict = collections.Counter()
+    for e in events:
+        if (e.get("pid"), e.get("tid")) in mains and e.get("name") == "ThreadControllerImpl::RunTask":
+            busy[(e["pid"], e["tid"])] += e.get("dur", 0)
+    return busy.most_common(1)[0][0] if busy else None
+
+
+LIFECYCLE = ("UpdateLayoutTree", "Layout", "PrePaint", "Paint", "Layerize")
+
+
+def request_steps(events: list[dict], stats: list[dict], origin_ms: float) -> dict:
+    """Each request's time split by what the page did, medians over the requests (ms).
+
+    ``stats`` are the page's own timings of the requests (``p.stats``: input, sent, ack,
+    painted = the animation frame after the ack, frame end), ``origin_ms`` the page's clock at
+    the trace event ``pg-trace-origin`` (a user-timing mark): so each request's moments are found
+    on the trace's clock.  Per request: input → the ack's task starts (kernel, server, websocket
+    and whatever ran on the page meanwhile), the ack's task (decoding, the widget's dispatch,
+    canvas.js's apply), ack task end → painted (the wait for the frame; ``other tasks before the
+    frame``: the main thread's other work in it, ``websocket tasks before the frame``: messages
+    that came after the ack and ran first, e.g. the controls' syncs), and the frame's own work
+    (style, layout, pre-paint, paint, layerize) from painted to frame end.
+    """
+    main = _main_thread(events)
+    mark = [e["ts"] for e in events if e.get("name") == "pg-trace-origin"]
+    if main is None or not mark:
+        return {}
+    off = mark[0] / 1e3 - origin_ms            # trace ms = page ms + off
+    evs = sorted((e for e in events if (e.get("pid"), e.get("tid")) == main and e.get("ph") == "X"),
+                 key=lambda e: e["ts"])
+    tasks = [(e["ts"] / 1e3, (e["ts"] + e.get("dur", 0)) / 1e3) for e in evs
+             if e["name"] == "ThreadControllerImpl::RunTask"]
+    ws = [e["ts"] / 1e3 for e in evs if e["name"] == "FunctionCall"
+          and "onWSMessage" in str((e.get("args", {}).get("data") or {}).get("functionName", ""))]
+    life = [(e["ts"] / 1e3, e.get("dur", 0) / 1e3, e["name"]) for e in evs if e["name"] in LIFECYCLE]
+
+    def task_at(t):
+        for a, b in tasks:
+            if a <= t <= b:
+                return a, b
+        return t, t
+
+    rows = collections.defaultdict(list)
+    for st in stats:
+        if not (st.get("tAck") and st.get("tPaint")):
+            continue
+        t_in, t_ack, t_paint = st["tInput"] + off, st["tAck"] + off, st["tPaint"] + off
+        t_frame = st["tFrame"] + off if st.get("tFrame") else None
+        a0, a1 = task_at(t_ack)
+        rows["input → ack task"].append(a0 - t_in)
+        rows["ack task"].append(a1 - a0)
+        rows["ack task end → painted"].append(t_paint - a1)
+        rows["other tasks before the frame"].append(sum(min(b, t_paint) - max(a, a1) for a, b in tasks
+                                                        if b > a1 and a < t_paint and a >= a1))
+        rows["websocket tasks before the frame"].append(sum(1 for t in ws if a1 <= t < t_paint))
+        if t_frame is not None:
+            rows["painted → frame end"].append(t_frame - t_paint)
+            for name in LIFECYCLE:
+                rows[f"  of which {name}"].append(sum(d for t, d, n in life if n == name and t_paint <= t < t_frame))
+    return {k: round(statistics.median(v), 2) for k, v in rows.items() if v}
+
+
 class Frames:
     """Websocket frames seen by the page, by direction and message type."""
 
@@ -222,8 +291,10 @@ def traced(page, cv, what, steps: int) -> dict:
     cdp.send("Tracing.start", {"categories": CATEGORIES, "transferMode": "ReportEvents"})
     cdp.send("Profiler.start")
     t0 = time.perf_counter()
-    pw0 = page.evaluate("performance.now()")
+    pw0 = page.evaluate("performance.mark('pg-trace-origin').startTime")   # the two clocks met
+    n_stats = pl._api(cv, "p.stats.length")
     lat = what()
+    stats = pl._api(cv, f"p.stats.slice({n_stats})")
     pw1 = page.evaluate("performance.now()")
     t1 = time.perf_counter()
     prof = cdp.send("Profiler.stop")["profile"]
@@ -244,6 +315,7 @@ def traced(page, cv, what, steps: int) -> dict:
             "script by source per step (ms, sampled)": {k: round(v / steps, 2) for k, v in
                                                         sorted(src.items(), key=lambda kv: -kv[1])},
             "top functions (ms per step)": [(k, round(v / steps, 2)) for k, v in profile_functions(prof)],
+            "each request, by what the page did (ms, median)": request_steps(chunks, stats, pw0),
             "_t": (t0, t1), "_raw": {"trace": chunks, "profile": prof}}
 
 
@@ -262,10 +334,14 @@ def open_lab(page) -> None:
             page.screenshot(path="/tmp/page_trace_lab.png")
 
 
-def run_medium(browser, medium: str, steps: int, tmp: Path, raw: Path | None) -> dict:
+def run_medium(browser, medium: str, steps: int, tmp: Path, raw: Path | None,
+               drag_sync_s: float | None = None) -> dict:
     root = tmp / medium
     root.mkdir()
-    pl._notebook(root / "page.ipynb", pl.CELLS[:2])
+    cells = list(pl.CELLS[:2])
+    if drag_sync_s is not None:     # the chain's drag_sync_s (0: controls and readout with every step)
+        cells[1] = cells[1].replace("\nchain", f"\nchain.drag_sync_s = {drag_sync_s!r}\nchain")
+    pl._notebook(root / "page.ipynb", cells)
     server, url = pl.serve(medium, root, tmp)
     page = browser.new_page(viewport={"width": 1400, "height": 1100})
     frames = Frames(page)
@@ -307,6 +383,8 @@ def main(argv=None) -> int:
     ap.add_argument("--only", choices=("voila", "jupyterlab"), action="append")
     ap.add_argument("--out", type=Path, default=Path("/tmp/page_trace"))
     ap.add_argument("--raw", action="store_true", help="also write the raw traces and CPU profiles")
+    ap.add_argument("--drag-sync-s", type=float, default=None,
+                    help="the chain's drag_sync_s (default: the explorer's; 0: syncs with every drag step)")
     ap.add_argument("--wait", choices=("page", "poll"), default="page",
                     help="page_latency.WAIT (page: the harness's polling stays out of the trace)")
     a = ap.parse_args(argv)
@@ -318,7 +396,8 @@ def main(argv=None) -> int:
         browser = launch_chromium(p)
         try:
             for medium in a.only or ("voila", "jupyterlab"):
-                res[medium] = run_medium(browser, medium, a.steps, Path(tmp), a.out / "raw" if a.raw else None)
+                res[medium] = run_medium(browser, medium, a.steps, Path(tmp), a.out / "raw" if a.raw else None,
+                                         a.drag_sync_s)
         finally:
             browser.close()
     a.out.mkdir(parents=True, exist_ok=True)
