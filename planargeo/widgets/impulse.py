@@ -21,7 +21,7 @@ import math
 import ipywidgets as W
 import numpy as np
 
-from planargeo.draw.pictures.impulse import impulse_picture
+from planargeo.draw.pictures.impulse import impulse_picture, moved_outline
 from planargeo.scenes.impulse import BODIES, body_outline, impulse
 from planargeo.widgets._explorer import Described, arrow_handle, grown_view, time_step, xy_handle
 from planargeo.widgets.base import Explorer, Step, point_text
@@ -88,11 +88,32 @@ class ImpulseExplorer(Described, Explorer):
                        y=float(values["strike y"]), angle_deg=float(values["strike angle"]), J=float(values["J"]))
 
     def _view(self) -> tuple[float, float, float, float]:
-        """The fixed frame grown to hold the blow's tip; no side shorter than the mechanism."""
+        """The view: at ``t = 0`` the fixed frame grown to hold the blow's tip (no side shorter than the
+        mechanism); moving (``t > 0``, Play or an animation's export), one view that holds the whole motion.
+
+        Held, the body swings about the grip: the frame grown to the circle its farthest point sweeps.
+        Free, its centre of mass moves straight on as it turns: the frame grown to the circle the body sweeps
+        about ``c``, carried along with ``c``.
+        """
         v = self.values
         tip = self.handle_position("blow tip")
-        return grown_view(self.limits, [tip], 0.1, extra=0.2,
-                          sized=np.vstack([body_outline(v["body"]), [v["strike x"], v["strike y"]], tip]))
+        outline = body_outline(v["body"])
+        box = grown_view(self.limits, [tip], 0.1, extra=0.2,
+                         sized=np.vstack([outline, [v["strike x"], v["strike y"]], tip]))
+        pc = getattr(self, "play_control", None)
+        moving = (float(v["t"]) > 0.0 or getattr(self, "_exporting", False)
+                  or bool(pc is not None and pc.playing))
+        st = self.state
+        if not moving or st is None:
+            return box
+        held = st.params["support"] == "held"
+        centre = np.zeros(2) if held else np.asarray(st.quantities["com"], dtype=float)
+        reach = float(np.max(np.hypot(*(outline - centre).T))) + 0.1
+        x0, x1, y0, y1 = grown_view(box, [centre - reach, centre + reach], 0.0)
+        if held:
+            return (x0, x1, y0, y1)
+        dx, dy = moved_outline(centre, st.extra["dv"], float(v["t"]), com=centre) - centre
+        return (x0 + dx, x1 + dx, y0 + dy, y1 + dy)
 
     def mechanism_points(self):
         pts = super().mechanism_points()
