@@ -24,8 +24,8 @@ import ipywidgets as W
 from planargeo.errors import InputError, PlanargeoError
 from planargeo.widgets.controls import same_value
 
-__all__ = ["MAX_CATCHUP", "PLAY_SYNC_S", "DRAG_SYNC_S", "MAX_ADVANCE_FRAMES", "MAX_ADVANCE_SECONDS", "MAX_ANIMATION_FRAMES",
-           "substeps", "run_substeps", "check_count", "check_duration", "PlayClock"]
+__all__ = ["MAX_CATCHUP", "PLAY_SYNC_S", "DRAG_SYNC_S", "MAX_ADVANCE_FRAMES", "MAX_ADVANCE_SECONDS",
+           "MAX_ANIMATION_FRAMES", "substeps", "run_substeps", "check_count", "check_duration", "PlayClock"]
 # PlayMixin (below) is the explorer's Play; it is documented with the Explorer it is part of
 
 #: wall seconds a single Play tick may catch up (a longer gap: the motion resumes, it does not jump)
