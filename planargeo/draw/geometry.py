@@ -136,14 +136,21 @@ def _clip(fx: float, fy: float, tz: float, x0: float, x1: float, y0: float, y1: 
         tlo, thi = max(tlo, a), min(thi, b)
     if not tlo <= thi:
         return None
-    out = [[p0 + tlo * d0, p1 + tlo * d1], [p0 + thi * d0, p1 + thi * d1]]
-    # snap the coordinate that hit the boundary exactly onto it
-    for q in out:
-        for k, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
-            if abs(q[k] - lo) <= 1e-12 * max(1.0, abs(lo)):
-                q[k] = lo
-            elif abs(q[k] - hi) <= 1e-12 * max(1.0, abs(hi)):
-                q[k] = hi
+    # snap the coordinate that hit the boundary exactly onto it (within 1e-12 of the bound, at least 1)
+    ex0, ex1 = 1e-12 * max(1.0, abs(x0)), 1e-12 * max(1.0, abs(x1))
+    ey0, ey1 = 1e-12 * max(1.0, abs(y0)), 1e-12 * max(1.0, abs(y1))
+    out = []
+    for t in (tlo, thi):
+        x, y = p0 + t * d0, p1 + t * d1
+        if abs(x - x0) <= ex0:
+            x = x0
+        elif abs(x - x1) <= ex1:
+            x = x1
+        if abs(y - y0) <= ey0:
+            y = y0
+        elif abs(y - y1) <= ey1:
+            y = y1
+        out.append([x, y])
     return out
 
 

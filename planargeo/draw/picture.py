@@ -61,41 +61,6 @@ FAR = 1e6
 _BELOW_LINE_PX, _BELOW_PAD_PX = 14.0, 4.0
 
 
-def _round_floats(values: list, n: int) -> list:
-    """``[round(v, n) for v in values]`` for a list of Python floats: the same numbers, in one pass.
-
-    ``round`` gives the double nearest to the decimal ``r·10⁻ⁿ``, ``r`` the integer nearest to the
-    exact ``v·10ⁿ`` (ties to even); so does the division ``r / 10ⁿ``, correctly rounded, ``r`` and
-    ``10ⁿ`` being exact (``|r| < 2⁴⁰``, ``n ≤ 22``).  The product ``v·10ⁿ`` in floating point is
-    within ``|v·10ⁿ|·2⁻⁵³`` of the exact one, so it can round the other way only that close to a
-    half: such values, and any out of that range or not finite, are left to ``round`` itself.  A
-    zero keeps ``v``'s sign, as with ``round``.
-
-    Examples
-    --------
-    >>> v = [0.1234567, -0.0001, 2.675, 1e300, float("nan"), 12.5, -3.14159, 7.0]
-    >>> all(repr(a) == repr(round(x, 3)) for a, x in zip(_round_floats(v, 3), v))
-    True
-    """
-    if not 0 <= n <= 22 or len(values) < 8:
-        return [round(v, n) for v in values]
-    x = np.array(values, dtype=float)
-    p = float(10 ** n)
-    with np.errstate(invalid="ignore", over="ignore"):
-        y = x * p
-        out = np.copysign(np.rint(y) / p, x).tolist()
-        ay = np.abs(y)
-        sure = (np.abs(y - np.floor(y) - 0.5) > ay * 1e-15) & (ay < _ROUND_LIMIT)
-    if not sure.all():
-        for i in np.flatnonzero(~sure).tolist():
-            out[i] = round(values[i], n)
-    return out
-
-
-#: ``|v·10ⁿ|`` below which :func:`_round_floats` divides (its integers exact)
-_ROUND_LIMIT = 2.0 ** 40
-
-
 def nice_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
     """About ``n`` round tick values (1, 2, 5 × 10ᵏ apart) between ``lo`` and ``hi``.
 
