@@ -157,7 +157,7 @@ def test_ideal_point_maps_to_a_diameter_and_line_at_infinity_to_the_centre(ex):
     assert not any(p["p"] == "mark" for p in parts)
     # M, the line at infinity: no stroke in the view, said in words; its pole the centre
     assert not any(p["p"] == "path" for p in els["M"]["parts"])
-    assert any(p["p"] == "text" and "line at ∞" in p["text"] for p in els["M"]["parts"])
+    assert any(p["p"] == "text" and p["text"] == "M at ∞" for p in els["M"]["parts"])
     assert mark(els["pole of M"]) == pytest.approx([0.0, 0.0])
     assert ex.readout_values["pole of M"] == pytest.approx((0.0, 0.0), abs=1e-12)
     assert ex.readout_values["P"] == "at infinity (direction (0.7071, 0.7071))" and "at infinity" in ex.readout_values["P is"]
@@ -247,3 +247,46 @@ def test_handles_are_where_they_can_be_grabbed():
     A, B = segment(elements(ex.picture())["M"])          # the drawn M passes the pivot and the pointer
     for Q in (pivot, (tip[0], tip[1] + 0.5)):
         assert cross2(B - A, np.asarray(Q) - A) == pytest.approx(0.0, abs=1e-3)
+
+
+@pytest.mark.parametrize("P_inf, M_inf", [(False, False), (False, True), (True, False), (True, True)])
+def test_the_linear_form_has_a_unit_only_when_it_is_a_distance(P_inf, M_inf):
+    """Issue: P·M read "1 m" with M the line at infinity and "−2.23 m" with P at infinity.  ``t = PᵀM``
+    (5.40) is the signed distance of P from M only for a finite P = [y, −x, 1] and a finite M = [e, r]
+    with |e| = 1 (5.49, 5.55); otherwise it is a number: P's weight 1 (M at infinity), the cross
+    product e × d of the directions (P at infinity), 0 (both).  Values by hand, from the sliders."""
+    ex = ProjectiveExplorer(display="agg", **{"P at infinity": P_inf, "M at infinity": M_inf,
+                                             "P x": 2.0, "P y": 1.5, "line angle (deg)": 100.0,
+                                             "line offset": 0.5})
+    assert ex.message == ""
+    e = np.array([math.cos(math.radians(100.0)), math.sin(math.radians(100.0))])
+    n = np.array([-e[1], e[0]])                                  # M's left normal; M is offset 0.5 along it
+    d = np.array([2.0, 1.5])
+    if not P_inf and not M_inf:
+        ref, unit = float(d @ n) - 0.5, "m"           # signed distance of P from M, positive on M's left
+    elif not P_inf:
+        ref, unit = 1.0, ""
+    elif not M_inf:
+        ref, unit = cross2(e, d), ""
+    else:
+        ref, unit = 0.0, ""
+    r = ex.readout_values
+    assert r["P·M"] == pytest.approx(ref, abs=1e-12) and r["pole(M)·polar(P)"] == pytest.approx(ref, abs=1e-12)
+    for k in ("P·M", "pole(M)·polar(P)"):
+        text = ex.readout_strings[k]
+        assert text.endswith(" m") == (unit == "m"), text
+        assert ex.units[k] in (("m",) if unit else ("—", ""))
+    meaning = ex.explain()["P·M"]
+    assert ("not a distance" in meaning) == (unit == ""), meaning
+    assert ("signed distance" in meaning) == (unit == "m"), meaning
+
+
+def test_the_line_at_infinity_label_is_clear_of_the_lines():
+    """Issue: the label of M = the line at infinity was crossed by a dashed tangent (the default P)."""
+    from _picture_checks import crossed_labels
+
+    ex = ProjectiveExplorer(display="agg", **{"M at infinity": True})
+    assert [c for c in crossed_labels(ex.picture()) if c[0] == "M"] == []
+    (text,) = [p["text"] for p in elements(ex.picture())["M"]["parts"] if p["p"] == "text"]
+    assert text == "M at ∞"
+    assert "line at infinity" in elements(ex.picture())["M"]["desc"]

@@ -115,6 +115,38 @@ def _settle(x, C, operand, kind: str) -> np.ndarray:
     return x
 
 
+#: what the linear form ``t = PᵀM`` (5.40) is when ``P`` or ``M`` is ideal: a number, not a distance
+FORM_MEANINGS = {
+    "line at infinity": "the linear form t = PᵀM (5.40) with M the line at infinity [0, 0, 1]: the weight of "
+                        "P = [y, −x, 1], so 1 for every finite point (0 only for a point at infinity); "
+                        "a number, not a distance",
+    "point at infinity": "the linear form t = PᵀM (5.40) with P at infinity, P = [dy, −dx, 0] for its "
+                         "direction d = (P x, P y): the cross product e × d of M's direction e and d, "
+                         "0 exactly when P is M's own point at infinity (M runs towards d); a number, "
+                         "not a distance",
+    "both at infinity": "the linear form t = PᵀM (5.40) with P at infinity and M the line at infinity: 0, "
+                        "every point at infinity lies on the line at infinity; a number, not a distance",
+}
+
+
+def _form_case(P, M) -> str:
+    """What ``PᵀM`` is: ``"distance"`` (both finite, 5.40), or the key of :data:`FORM_MEANINGS`.
+
+    Examples
+    --------
+    >>> _form_case([1.5, -2.0, 1.0], [0.0, 1.0, 0.5]), _form_case([1.5, -2.0, 1.0], [0.0, 0.0, 1.0])
+    ('distance', 'line at infinity')
+    >>> _form_case([1.5, -2.0, 0.0], [0.0, 1.0, 0.5]), _form_case([1.5, -2.0, 0.0], [0.0, 0.0, 1.0])
+    ('point at infinity', 'both at infinity')
+    """
+    ideal_P, ideal_M = bool(is_ideal(np.asarray(P, float))), bool(is_at_infinity(np.asarray(M, float)))
+    if ideal_P and ideal_M:
+        return "both at infinity"
+    if ideal_M:
+        return "line at infinity"
+    return "point at infinity" if ideal_P else "distance"
+
+
 class ProjectiveExplorer(Described, Explorer):
     """Pole and polar of a movable point and line with respect to a conic."""
 
@@ -292,10 +324,25 @@ class ProjectiveExplorer(Described, Explorer):
             "P·M": float(P @ M),
             "pole(M)·polar(P)": float(pm @ pol),
         }
+        # a distance only between a finite point of weight 1 and a finite line with |e| = 1 (5.40, 5.55);
+        # with an ideal element the same form is a plain number (the weight of P, or a cross of directions)
+        unit = "m" if _form_case(P, M) == "distance" else "—"
+        self.units = {**type(self).units, "P·M": unit, "pole(M)·polar(P)": unit}
         if state["type"].kind == "parabola":   # its centre is the ideal point of its axis
             out["centre"] = point_value(_settle(pole(state["C"], [0.0, 0.0, 1.0]), state["C"], [0.0, 0.0, 1.0], "pole"))
         else:
             out["centre"] = point_value(centre(state["C"]))
+        return out
+
+    def explain(self):
+        out = super().explain()
+        st = self.state
+        if st is not None:
+            case = _form_case(st["P"], st["M"])
+            if case != "distance":
+                out["P·M"] = FORM_MEANINGS[case]
+                out["pole(M)·polar(P)"] = ("the same number from the images, t = (C⁻¹M)ᵀ(C P) (5.41): "
+                                           "a linear form is kept by the conic's map")
         return out
 
     def scene_picture(self, state, view=None):

@@ -113,7 +113,7 @@ def projective_picture(st: dict, *, construction: bool = True, line_and_pole: bo
         label_line(pic, "M", "M", side=-1.0)
         for q in pic.elements[-1]["parts"]:
             if q["p"] == "text" and "line at ∞" in q["text"]:     # not a couple here: the line itself
-                q["text"] = "M = the line at ∞"
+                q["text"] = "M at ∞"
         point_along(pic, "pole of M", st["poleM"], role="accel", glyph=False, symbol="C⁻¹ M", label="pole of M",
                   size=8.5, desc=f"pole C⁻¹ M of the line M (5.37): {where(st['poleM'])}")
     point_along(pic, "P", st["P"], role="twist", symbol="P", size=9.5,
