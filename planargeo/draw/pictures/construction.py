@@ -142,13 +142,15 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
     pic = Picture((x0, x1, y0, y1), size=size, margin=(ml, mr, mt, mb))
     bx0, bx1, by0, by1 = pic.box
     band_top = by0 + band_px / pic.ky
-    # one element: the band (white, a thin frame) and the caption's lines in it, placed first by the
-    # label placer (topmost), so that no label of the drawing lands on them
+    # one element: the band (white, a thin frame) and the caption's lines in it, at a fixed place
+    # (the label placer moves none of them: a line moved off a stroke crossing the band left it and
+    # was drawn over the plot; the drawing's labels keep clear of them)
     pic.path("caption", [[bx0, by0], [bx1, by0], [bx1, band_top], [bx0, band_top]], role="text",
              closed=True, fill="#FFFFFF", color="#444444", width=0.6, z=20, symbol="step",
              desc=f"the step shown: {caption}")
     for i, line in enumerate(lines):
         label_at(pic, (bx0, band_top), line, gap=6.0, dy=-5.0 - 1.3 * FONT_PX * i, va="top")
+        pic.elements[-1]["parts"][-1]["fixed"] = True
     centre, nrm = _frame(c, shown)
     view_centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
     lines_labelled = 0
