@@ -2,7 +2,7 @@
 
 ``n`` bodies (joints ``L`` apart) hang from ``CJ_1`` at the origin, each further joint bent by
 ``phi``, at rest, gravity ``g`` (0: the thesis's example).  A couple ``f_{n+1} = [0, 0, tau]``
-acts on the tip (as ``-f_{n+1}``, 3.1; 7.44).  Split at joint ``split + 1``: bodies
+acts on the tip (as ``-f_{n+1}``, 3.1; 7.44: the tip feels ``-tau``, counter-clockwise positive).  Split at joint ``split + 1``: bodies
 ``1..split`` form the constrained chain (mobility ``Lambda_i⁻¹``, ``b_i``, 7.4.1 corrected
 7.38a), the rest the free-floating chain (``A_{i+1}``, ``d_{i+1}``, 7.1.1).  With ``n = 2``
 this is example 7.5 (Figure 7.9): ``x / L = 1 + 2 eta² cos(phi) / (4 + 5 eta²)`` (7.47).
@@ -59,7 +59,8 @@ def splitting_state(model, q, split: int, tau: float, *, L: float = 1.0) -> dict
     split : int
         Split at joint ``split + 1`` (1 <= split < n).
     tau : float
-        The couple ``f_{n+1} = [0, 0, tau]`` on the tip (applied as ``-f_{n+1}``).
+        The moment of ``f_{n+1} = [0, 0, tau]`` (7.44): the tip feels ``-f_{n+1}``, a couple ``-tau``
+        (counter-clockwise positive); 0: no couple.
     L : float
         Distance between joints.
 
@@ -130,7 +131,9 @@ def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi:
     m, rho, L, phi : float
         Mass, radius of gyration and length of each body (> 0); bend at every later joint [rad].
     tau, split, g : float, int, float
-        The couple on the tip [N·m] (non-zero); split at joint ``split + 1``; gravity along -y (>= 0).
+        The moment of ``f_{n+1} = [0, 0, tau]`` [N·m] (non-zero), the thesis's notation (7.44): the tip
+        feels ``-f_{n+1}``, a couple ``-tau`` (clockwise for ``tau > 0``; the explorer's slider is the
+        couple on the tip itself); split at joint ``split + 1``; gravity along -y (>= 0).
 
     Returns
     -------
