@@ -278,3 +278,17 @@ def test_no_couple_is_an_ordinary_state_drawn_at_rest():
     assert "centre" in els and "a1" in els and "a2" in els
     assert "no couple" in els["couple"]["desc"]
     _legible(ex)
+
+
+def test_the_couple_slider_steps_through_zero_like_a_keyboard():
+    """Issue: ArrowLeft from +0.05 snapped back to 0.05 (τ = 0 was refused without gravity).  The slider's
+    own steps, as the page sends them, from +0.10 to −0.10: each is kept, q̈ is linear in τ (Lagrange)."""
+    ex = SplittingExplorer(display="agg")
+    w = ex.controls["couple τ (N·m)"]
+    ex.set(**{"couple τ (N·m)": 0.1})
+    unit = lagrange_qdd_at_rest(2, 0.5, math.pi / 4, 1.0)
+    for k in range(4):
+        w.value = round(w.value - w.step, 10)          # one ArrowLeft
+        assert ex.message == "" and w.value == ex.values["couple τ (N·m)"]
+        np.testing.assert_allclose(ex.readout_values["q̈ (6.110)"], w.value * unit, atol=1e-12)
+    assert w.value == pytest.approx(-0.1)
