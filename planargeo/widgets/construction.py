@@ -67,6 +67,26 @@ def _label(kind: str, name: str) -> str:
     return name if unit == "—" else f"{name} ({unit})"
 
 
+#: what a slider means where its label cannot say it all (its hover text), per construction; twist
+#: addition's sliders set the centre of the rotation, the pole drawn (and its handle) is that centre
+#: shifted by the translation (4.16): the two differ while u ≠ 0
+_TIPS = {
+    "twist_sum": {
+        f"{c}{k}": (f"centre of ω{s}: the point the rotation ω{s} of v{s} turns about (4.10). The pole Q{s} "
+                    f"drawn, where the handle v{s} sits, is this centre shifted by ρ = u{s}/ω{s} across u{s} "
+                    f"(4.16): the same point while u{s} = 0")
+        for k, s in (("1", "₁"), ("2", "₂")) for c in "xy"},
+}
+
+#: what dragging a handle does (its hover text), per construction; the others: "drag to move <name>"
+_HANDLE_TIPS = {
+    "twist_sum": {f"v{s}": (f"pole Q{s} of v{s}: drag it to move v{s}; the centre of ω{s} moves with it, "
+                            f"ρ = u{s}/ω{s} away (4.16)") for s in "₁₂"},
+    "wrench_sum": {**{f"f{s}": f"a point of f{s}'s line of action: drag it to move the line" for s in "₁₂"},
+                   **{f"f{s} direction": f"direction of F{s}: drag it to turn the force (and set its size)"
+                      for s in "₁₂"}},
+}
+
 #: draggable points per construction: (handle name, x parameter, y parameter); a handle is named as
 #: the picture labels what it moves (v₁, f₂, vᵢ₋₁), since a refused drag names its handle
 _POINTS = {
@@ -181,11 +201,16 @@ class ConstructionExplorer(Explorer):
             elif w.max != n:
                 w.max = n
         used = set(parameters(kind))
+        tips = _TIPS.get(kind, {})
         for name in self._all_params:
             c = self.controls[name]
             label = _label(kind, name) if name in used else c.description
             if c.description != label:
                 c.description = label
+            if name in used and hasattr(self, "_tooltips"):    # the hover text of this construction
+                self._tooltips[name] = tips.get(name)
+                if not c.disabled and c.tooltip != tips.get(name):
+                    c.tooltip = tips.get(name)
             display = None if name in used else "none"
             if c.layout.display != display:
                 c.layout.display = display
@@ -309,6 +334,15 @@ class ConstructionExplorer(Explorer):
             return {kx: x - (float(p[0]) - v[kx]), ky: y - (float(p[1]) - v[ky])}
 
         return Handle(name, where, drag)
+
+    def picture(self) -> dict:
+        """What is shown (:meth:`Explorer.picture`), each handle saying what its drag does."""
+        pic = super().picture()
+        tips = _HANDLE_TIPS.get(self.construction, {})
+        for h in pic.get("handles", ()):
+            if h["id"] in tips:
+                h["desc"] = tips[h["id"]]
+        return pic
 
     def handles(self) -> list[Handle]:
         if self.construction == "twist_sum":
