@@ -171,7 +171,25 @@ def free_door(ex, t, m=3.0, d=0.3, J=1.0):
     np.testing.assert_allclose(body_xy(ex), moved, atol=1e-5 * (1 + np.abs(moved).max()))
     mark = [p for p in elements(ex.picture())["c"]["parts"] if p["p"] == "mark"][0]
     np.testing.assert_allclose([mark["x"], mark["y"]], c0 + vc * t, atol=1e-5 * (1 + t))
+    R = np.array([[ct, s], [-s, ct]])
+    grip = (np.zeros(2) - c0) @ R + c0 + vc * t                      # the hinge end of the door
+    cop = (np.array(ex.readout_values["centre of percussion (5.67)"]) - c0) @ R + c0 + vc * t
+    on_body_axis(ex, grip, c0 + vc * t, cop, 1e-5 * (1 + t))
     in_view(ex)
+
+
+def on_body_axis(ex, grip, c, cop, tol):
+    """The grip P and the centre of percussion drawn at their moved places, the axis of percussion of P
+    through the centre of percussion, across the line P c (5.67)."""
+    els = elements(ex.picture())
+    (P,) = [p for p in els["P"]["parts"] if p["p"] == "mark"]
+    np.testing.assert_allclose([P["x"], P["y"]], grip, atol=tol)
+    (mark,) = [p for p in els["centre of percussion"]["parts"] if p["p"] == "mark"]
+    np.testing.assert_allclose([mark["x"], mark["y"]], cop, atol=tol)
+    (seg,) = [np.asarray(p["xy"], float) for p in els["axis"]["parts"] if p["p"] == "path"]
+    u = (seg[1] - seg[0]) / np.hypot(*(seg[1] - seg[0]))
+    n = (c - grip) / np.hypot(*(c - grip))
+    assert abs(u @ n) < 1e-4 and abs((cop - seg[0]) @ np.array([-u[1], u[0]])) < 1e-4
 
 
 def in_view(ex):
@@ -213,6 +231,7 @@ def test_play_carries_c_its_circle_and_the_centre_of_percussion_with_the_body_an
         np.testing.assert_allclose([ell["x"], ell["y"]], c_ref @ R, atol=2e-5)
         (cop,) = [p for p in els["centre of percussion"]["parts"] if p["p"] == "mark"]
         np.testing.assert_allclose([cop["x"], cop["y"]], cop0 @ R, atol=2e-5)
+        on_body_axis(ex, np.zeros(2), c_ref @ R, cop0 @ R, 2e-5)
         in_view(ex)
         boxes.add(tuple(ex.picture()["box"]))
         legible(ex)

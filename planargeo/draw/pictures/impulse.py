@@ -132,7 +132,7 @@ def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
     cop = moved_outline(cop0, dv, t, c0) if t > 0 else cop0
     d = float(np.hypot(*com0))
     below = moved_outline(cop0 + [0.0, -0.4], dv, t, c0) if t > 0 else (cop0[0], cop0[1] - 0.4)
-    labelled_line(pic, "axis", percussion_axis(I, [grip_at[0], grip_at[1], 1.0]), "axis of percussion of P",
+    labelled_line(pic, "axis", percussion_axis(I, [grip_at[1], -grip_at[0], 1.0]), "axis of percussion of P",
                   role="construct", arrow=False,
                   symbol="axis of percussion of P", anchor=below,
                   desc="the line of blows that leave P without reaction (5.67): at l = d + ρ²/d = "
@@ -158,7 +158,7 @@ def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
                         f"{where(now)}"))
     near = math.hypot(free[0], free[1]) < 0.04 * abs(free[2])      # at the grip (drawn)
     ptext = f"P ({grip})" + (" ≈ pole if free" if held and near else "")
-    pic.point("P", [grip_at[0], grip_at[1], 1.0], role="twist", color=COLORS["ground"], glyph=False, shape="s",
+    pic.point("P", [grip_at[1], -grip_at[0], 1.0], role="twist", color=COLORS["ground"], glyph=False, shape="s",
               size=8.0, symbol="P", label=ptext,
               desc=f"the {grip}, where the {prm['body']} is " + ("held (a revolute joint): at (0, 0) m" if held
                                                                 else f"held when held; now free: at {pair(grip_at)} m"))
