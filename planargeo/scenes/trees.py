@@ -272,7 +272,7 @@ CROSS_STEP = 1e-3
 _CROSS_FACTORS = (1.0, 0.77, 1.3, 0.5, 2.0, 0.31, 3.0, 0.2, 5.0)
 
 
-def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
+def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True, every=None):
     """Integrate the tree (loops closed by its contacts, if any) over ``dt`` seconds (9.5 with :func:`simulate_loops`).
 
     The closed tree's loop 5-6-8-9 is a rhombus that folds flat in most motions: ``BᵀGΛ⁻¹GᵀB``
@@ -289,12 +289,19 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
         The state at the start (on the loops) and the duration (s, > 0).
     rtol, atol, cross : float, float, bool
         Integrator tolerances (DOP853); step over singular configurations, or stop there.
+    every : float, optional
+        Also give the states every ``every`` seconds from the start (DOP853's dense output between
+        its steps, projected onto the loops as each step's end is; the steps taken are the same).
+        Only a step that needs no crossing gives them: the states at ``every``, ``2·every``, …
+        before ``dt``.
 
     Returns
     -------
     dict
         ``q``, ``qd`` at the end, ``position_residual``, ``velocity_residual`` (largest closure
-        drift), ``events`` (``t`` from the start of the step), ``crossings``, ``nfev``, ``status``.
+        drift), ``events`` (``t`` from the start of the step), ``crossings``, ``nfev``, ``status``;
+        with ``every``, ``samples``: ``(t, q, qd, position_residual)`` per state (the largest closure
+        drift up to it), none if a singular pose was crossed.
 
     Raises
     ------
@@ -309,12 +316,18 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
     >>> out = tree_advance(closed.model, closed.state["q"], closed.state["qd"], 0.01)
     >>> out["status"], bool(out["position_residual"] < 1e-9)
     ('ok', True)
+    >>> out = tree_advance(closed.model, closed.state["q"], closed.state["qd"], 0.01, every=0.0025)
+    >>> [round(t, 4) for t, *_ in out["samples"]]
+    [0.0025, 0.005, 0.0075]
     """
     from planargeo.simulate.loops import simulate_loops
 
     dt = check_param("dt", dt, positive=True)
     q, qd = np.array(q, dtype=float), np.array(qd, dtype=float)
     t0, pos, vel, events, nfev, crossings = 0.0, 0.0, 0.0, [], 0, 0
+    samples = []
+    if every is not None:
+        every = check_param("every", every, positive=True)
 
     def take(res, upto, start):
         nonlocal pos, vel, nfev
@@ -331,9 +344,16 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
                               f"the step: {res.message}")
 
     while dt - t0 > 1e-12 * max(1.0, dt):
-        res = simulate_loops(model, q, qd, dt - t0, rtol=rtol, atol=atol, progress=False)
+        sample = every is not None and t0 == 0.0 and every < dt
+        res = simulate_loops(model, q, qd, dt - t0, rtol=rtol, atol=atol, progress=False,
+                             dt=every if sample else None)
         if res.status == "ok":
             take(res, len(res.t) - 1, t0)
+            if sample:             # the states on the way (not the start, not the end)
+                drift = np.maximum.accumulate(np.asarray(res.extra["position_residual"], dtype=float))
+                samples = [(float(res.t[i]), np.array(res.q[i], dtype=float), np.array(res.qd[i], dtype=float),
+                            float(drift[i])) for i in range(1, len(res.t) - 1)
+                           if float(res.t[i]) < dt * (1 - 1e-9)]
             q, qd, t0 = np.array(res.q[-1], dtype=float), np.array(res.qd[-1], dtype=float), dt
             break
         if res.status != "singular" or not cross:
@@ -362,9 +382,11 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
             if c.size and c[-1] < CROSS_COND:
                 break
         crossings += 1
+        samples = []
         events.append({"kind": "singular pose passed", "t": t0, "cond": float(cond.max())})
     return {"q": q, "qd": qd, "position_residual": pos, "velocity_residual": vel,
-            "events": sorted(events, key=lambda e: e["t"]), "crossings": crossings, "nfev": nfev, "status": "ok"}
+            "events": sorted(events, key=lambda e: e["t"]), "crossings": crossings, "nfev": nfev, "status": "ok",
+            **({"samples": samples} if every is not None else {})}
 
 
 def tree_reactions(model, sol) -> list:

@@ -23,7 +23,7 @@ from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_m
                                     tree_solve)
 from planargeo.simulate.integrate import energy
 from planargeo.widgets._explorer import (Described, HeldView, SceneTime, explorer_data, run_to, state_handle,
-                                        time_value)
+                                        time_text, time_value)
 from planargeo.widgets._motion import Budget
 from planargeo.widgets.base import Explorer, Step, Toggle, cached
 
@@ -41,8 +41,13 @@ INITIAL = ("speed", "loops", "gravity", "mass", "body 1 angle (deg)", "body 2 an
 DEFAULT_G, DEFAULT_SPEED = 0.0, 0.25
 #: relative tolerance of the Play integration (DOP853)
 PLAY_RTOL = 1e-7
-#: seconds between the checkpoints of a run (the state at t is integrated from the last one before t)
-CHECKPOINT = 0.05
+#: Play's frames per scene second at most: while Play runs, its times fall on the grid of 1/FRAME_RATE s
+#: (the clock keeps the rest for the next frame, so the time scale stays true)
+FRAME_RATE = 60
+#: seconds between the checkpoints of a run (the state at t is integrated from the last one before t);
+#: each checkpoint's step also gives the states on Play's grid within it (the integrator's dense output,
+#: projected onto the loops), so a frame of Play integrates nothing
+CHECKPOINT = 15 / FRAME_RATE
 #: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
 T_END = 60.0
 #: evaluations of the dynamics one update may spend (~2 ms each under load; the default spends about
@@ -171,16 +176,64 @@ class TreeExplorer(HeldView, Described, SceneTime, Explorer):
         return np.vstack([self.state["sol"].data.pose[:, :2], self.state["tips"]])
 
     # Play: SceneTime's t from 0 to T_END
+    _play_carry = (None, 0.0)       # (the time Play showed last, the clock's seconds past it)
+
+    def play_step(self, values, dt):
+        """While Play runs, its time on the grid of :data:`FRAME_RATE` (the states there are kept with
+        the checkpoints: a frame integrates nothing); the seconds past it are carried to the next step."""
+        pc = self.play_control
+        if pc is None or not pc.playing:
+            return super().play_step(values, dt)
+        text = values["t (s)"]
+        held, carry = self._play_carry
+        t = time_value(text, T_END) + (carry if held == text else 0.0) + float(dt)
+        if t > T_END + 1e-9:
+            return None
+        j = min(math.floor(t * FRAME_RATE + 1e-9), int(T_END * FRAME_RATE))
+        out = time_text(j / FRAME_RATE)
+        self._play_carry = (out, t - j / FRAME_RATE)
+        return {"t (s)": out}
+
     @staticmethod
-    def _step(model, budget, state, h, t0):
-        """A step of a run (:func:`run_to`): ``(state, residual, events)``."""
+    def _advance(model, budget, state, h, t0, every=None):
+        """:func:`tree_advance` from ``state`` at ``t0`` over ``h``: its output, the events at their times."""
         try:
-            out = tree_advance(model, *state, h, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
+            out = tree_advance(model, *state, h, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2, every=every)
         except PlanargeoError as exc:
             raise PlanargeoError(f"the loops locked at t ≈ {t0:.2f} s: {exc}") from exc
         budget.charge(out["nfev"])
-        return (out["q"], out["qd"]), out["position_residual"], [(t0 + float(e["t"]), e["kind"])
-                                                                 for e in out["events"]]
+        out["events"] = [(t0 + float(e["t"]), e["kind"]) for e in out["events"]]
+        return out
+
+    @classmethod
+    def _step(cls, model, budget, run, state, h, t0):
+        """A step of a run (:func:`run_to`): ``(state, residual, events)``.
+
+        From a checkpoint: its step to the next (kept in ``run["steps"]``, with the states on Play's
+        grid within it); a time on that grid is read off it, any other time integrated from the checkpoint.
+        """
+        k = round(t0 / CHECKPOINT)
+        if abs(t0 - k * CHECKPOINT) <= 1e-9 and h <= CHECKPOINT + 1e-9:
+            steps = run.setdefault("steps", {})
+            out = steps.get(k)
+            if out is None:
+                try:
+                    out = cls._advance(model, budget, state, CHECKPOINT, t0, every=1.0 / FRAME_RATE)
+                except PlanargeoError:
+                    if h >= CHECKPOINT - 1e-9:
+                        raise
+                    out = None              # the loops lock later in this step: the time before, alone
+                else:
+                    steps[k] = out
+            if out is not None:
+                if h >= CHECKPOINT - 1e-9:
+                    return (out["q"], out["qd"]), out["position_residual"], out["events"]
+                j = round(h * FRAME_RATE)
+                for ts, q, qd, drift in out["samples"]:
+                    if abs(ts - h) <= 1e-9 and abs(h - j / FRAME_RATE) <= 1e-9:
+                        return (q, qd), drift, [e for e in out["events"] if e[0] <= t0 + ts]
+        out = cls._advance(model, budget, state, h, t0)
+        return (out["q"], out["qd"]), out["position_residual"], out["events"]
 
     def _run_key(self, values):
         """``(closed, model, key)``: the run of ``values`` is ``_runs[key]``."""
@@ -204,7 +257,7 @@ class TreeExplorer(HeldView, Described, SceneTime, Explorer):
         try:
             while len(run["ck"]) <= last:
                 n = len(run["ck"])
-                run_to(run, n * CHECKPOINT, CHECKPOINT, partial(self._step, model, budget), budget)
+                run_to(run, n * CHECKPOINT, CHECKPOINT, partial(self._step, model, budget, run), budget)
                 if time.perf_counter() >= end:
                     break
         except PlanargeoError:           # the frame that reaches it says why
@@ -252,9 +305,11 @@ class TreeExplorer(HeldView, Described, SceneTime, Explorer):
         a1, a2, speed = float(values["body 1 angle (deg)"]), float(values["body 2 angle (deg)"]), float(values["speed"])
         pose_key, poses = (closed, a1, a2), self._cache("_poses")     # q(0) and its speeds, kept
         pose = poses.get(pose_key) or tree_pose(model, math.radians(a1), 1.0, angle2=math.radians(a2))
+        made = {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}
         run, t, (q, qd), drift, events = self.run_at(
-            key, lambda: {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}, values["t (s)"],
-            lambda budget: partial(self._step, model, budget), CHECKPOINT, UPDATE_EVALS)
+            key, lambda: made, values["t (s)"],
+            lambda budget: partial(self._step, model, budget, self._cache("_runs").get(key, made)),
+            CHECKPOINT, UPDATE_EVALS)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
         E = float(sum(energy(model, data=sol.data)))
         if "E0" not in run:                                         # the energy at t = 0, once per run
