@@ -412,3 +412,15 @@ def test_ctrl_c_during_advance_keeps_what_was_computed():
     with pytest.raises(KeyboardInterrupt):
         ex.advance(1, seconds=1.0)                    # one picture of 20 steps, stopped at the 7th
     assert ex.values["x"] == pytest.approx(0.3) and ex.readout_values["x"] == ex.values["x"]
+
+
+def test_reset_returns_plays_speed_and_loop_to_their_defaults():
+    """Reset returns every control to its default (the app's words), Play's speed and loop included."""
+    from planargeo.widgets import ChainExplorer
+
+    ex = ChainExplorer(display="agg", links=2)
+    ex.play_speed.value, ex.play_loop.value = 4.0, False
+    ex.set(angle=-20.0)
+    ex.reset_button.click()
+    assert (ex.play_speed.value, ex.play_loop.value) == (1.0, True)
+    assert ex.values == ex.defaults and ex.message == ""

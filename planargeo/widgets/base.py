@@ -412,12 +412,14 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return self
 
     def reset(self) -> None:
-        """Return every control to its default, the values first shown (one update)."""
+        """Return every control to its default, the values first shown (one update), and Play's
+        speed and loop to theirs (1×, looping)."""
         self._resetting = True
         try:
             with self.hold():
                 for k, v in self.defaults.items():
                     self.controls[k].value = v
+                self._reset_play()
                 self._pending = True
         finally:
             self._resetting = False

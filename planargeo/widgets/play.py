@@ -243,6 +243,12 @@ class PlayMixin:
         self.play_control.observe(self.guarded(self._play_tick), names="value")
         self.play_control.observe(self.guarded(self._play_toggled), names="playing")
 
+    def _reset_play(self) -> None:
+        """Play's speed and loop at their defaults (for :meth:`Explorer.reset`)."""
+        if self.play_speed is not None:
+            self.play_speed.value = 1.0
+            self.play_loop.value = True
+
     def advance(self, n_frames: int = 1, *, seconds: float | None = None,
                 allow_long: bool = False) -> "Explorer":
         """Step Play ``n_frames`` frames without a front end (one update per frame).
