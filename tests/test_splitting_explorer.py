@@ -277,6 +277,10 @@ def test_no_couple_is_an_ordinary_state_drawn_at_rest():
     els = elements(ex.picture())
     assert "centre" in els and "a1" in els and "a2" in els
     assert "no couple" in els["couple"]["desc"]
+    (note,) = [q["text"] for q in els["at rest"]["parts"] if q["p"] == "text"]
+    assert note == "no load: the chain stays at rest"
+    ex.set(**{"couple τ (N·m)": 0.05})
+    assert "at rest" not in elements(ex.picture())
     _legible(ex)
 
 

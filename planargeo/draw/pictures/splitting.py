@@ -111,6 +111,12 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
             for part in pic.elements[-1]["parts"]:
                 if part["p"] == "text":
                     part["text"] = ""
+    if not np.any(np.asarray(st["a"], float)):             # no load at all (τ = 0, g = 0): exactly at rest
+        x0, _x1, _y0, y1 = pic.box
+        pic.text("at rest", (x0, y1), "no load: the chain stays at rest", role="text", symbol="at rest",
+                 desc="no couple on the tip and no gravity: every acceleration is zero, so no pole is drawn; "
+                      "the mobilities and their centre do not depend on the load: at rest",
+                 ha="left", va="top", dx=6.0, dy=-6.0)
     c = np.asarray(st["centres"][i - 1], float)
     if centres and bool(np.all(np.isfinite(c))):
         pic.point("centre", [c[1], -c[0], 1.0], role="twist", glyph=False, shape="D", size=7.0,
