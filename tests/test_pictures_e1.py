@@ -170,7 +170,7 @@ OLD_READOUTS = [
     ('ProjectiveExplorer', {}, {},
      {'P x': '2 m', 'P y': '1.5 m', 'P': '(2, 1.5) m', 'conic': 'real ellipse', 'P is': 'outside', 'polar of P: distance to origin': '0.7769 m', 'pole of M': '(-4.283, -1.189) m', 'P·M': '-2.73 m', 'pole(M)·polar(P)': '-2.73 m', 'centre': '(0, 0) m'}),
     ('ProjectiveExplorer', {}, {'P at infinity': True, 'M at infinity': True},
-     {'P x': '2 m', 'P y': '1.5 m', 'P': 'at infinity (direction (0.8, 0.6))', 'conic': 'real ellipse', 'P is': 'outside (at infinity)', 'polar of P: distance to origin': '0 m', 'pole of M': '(0, 0) m', 'P·M': '0', 'pole(M)·polar(P)': '0', 'centre': '(0, 0) m'}),
+     {'P x': '2', 'P y': '1.5', 'P': 'at infinity (direction (0.8, 0.6))', 'conic': 'real ellipse', 'P is': 'outside (at infinity)', 'polar of P: distance to origin': '0 m', 'pole of M': '(0, 0) m', 'P·M': '0', 'pole(M)·polar(P)': '0', 'centre': '(0, 0) m'}),
     ('PercussionExplorer', {}, {'shape': 'L-shape', 'pole x': -0.5, 'pole y': 0.5},
      {'pole x': '-0.5 m', 'pole y': '0.5 m', 'mass m': '1 kg', 'radius of gyration ρ': '0.3439 m', 'centre of mass': '(0.6286, 0.07143) m', 'pole': '(-0.5, 0.5) m', 'd = |pole − c|': '1.207 m', 'r = ρ²/d (5.68)': '0.09795 m', 'l = d + ρ²/d (5.67)': '1.305 m', 'angular accel. α': '10 rad/s²', 'force for α: m d α (5.66)': '12.07 N', 'centre of percussion': '(0.7201, 0.03665) m', 'sweet spot of the grip': '(0.8143, 0.09253) m'}),
     ('ScrewSumExplorer', {}, {'kind2': 'translation', 'angle2': 45.0},

@@ -328,6 +328,8 @@ class ProjectiveExplorer(Described, Explorer):
         # with an ideal element the same form is a plain number (the weight of P, or a cross of directions)
         unit = "m" if _form_case(P, M) == "distance" else "—"
         self.units = {**type(self).units, "P·M": unit, "pole(M)·polar(P)": unit}
+        if v["P at infinity"]:                 # (P x, P y) is then a direction, not a place
+            self.units.update({"P x": "—", "P y": "—"})
         if state["type"].kind == "parabola":   # its centre is the ideal point of its axis
             out["centre"] = point_value(_settle(pole(state["C"], [0.0, 0.0, 1.0]), state["C"], [0.0, 0.0, 1.0], "pole"))
         else:
