@@ -335,13 +335,15 @@ class ConstructionExplorer(Explorer):
 
         return Handle(name, where, drag)
 
+    def handle_words(self, name: str) -> str:
+        """What dragging handle ``name`` of the construction shown does, in words (its hover text)."""
+        return _HANDLE_TIPS.get(self.construction, {}).get(name, f"drag to move {name}")
+
     def picture(self) -> dict:
         """What is shown (:meth:`Explorer.picture`), each handle saying what its drag does."""
         pic = super().picture()
-        tips = _HANDLE_TIPS.get(self.construction, {})
         for h in pic.get("handles", ()):
-            if h["id"] in tips:
-                h["desc"] = tips[h["id"]]
+            h["desc"] = self.handle_words(h["id"])
         return pic
 
     def handles(self) -> list[Handle]:

@@ -21,7 +21,7 @@ import math
 import ipywidgets as W
 import numpy as np
 
-from planargeo.draw.pictures.screw_sum import screw_sum_picture
+from planargeo.draw.pictures.screw_sum import ARM as VELOCITY_ARM, screw_sum_picture
 from planargeo.errors import InputError
 from planargeo.geometry.projective import is_at_infinity
 from planargeo.screws.special import twists_case, wrenches_case
@@ -103,8 +103,18 @@ def _meet_label(c):
     return _xy_or_ideal(c.P)
 
 
-#: length of a direction handle's arm (data units), from the screw's point
-ARM = 1.0
+#: length of a direction handle's arm (data units), from the screw's point (as the picture draws
+#: a translation's velocity u)
+ARM = VELOCITY_ARM
+
+#: what dragging each handle does (its hover text)
+_HANDLE_TIPS = {}
+for _k, _s in _SUBSCRIPT.items():
+    _HANDLE_TIPS.update({
+        f"v{_s}": f"pole of v{_s}: drag it to move the rotation's centre",
+        f"v{_s} direction": f"direction of u{_s} (v{_s} a translation): drag the arrow's tip to turn it",
+        f"f{_s}": f"a point of f{_s}'s line of action: drag it to move the line",
+        f"f{_s} direction": f"direction of F{_s}: drag it to turn the force (and set its size)"})
 
 
 class ScrewSumExplorer(Described, Explorer):
@@ -241,8 +251,21 @@ class ScrewSumExplorer(Described, Explorer):
 
     def scene_picture(self, state, view=None):
         v = self.shown_values or self.values
-        return screw_sum_picture(state["mode"], state["c"], anchors=((v["x1"], v["y1"]), (v["x2"], v["y2"])),
+        feet = ((v["x1"], v["y1"]), (v["x2"], v["y2"]))
+        # a translation's velocity drawn from its point: the arrow whose tip its direction handle is
+        arms = tuple(feet[k - 1] if v[f"kind{k}"] == "translation" else None for k in (1, 2))
+        return screw_sum_picture(state["mode"], state["c"], anchors=feet, arms=arms,
                                  view=view or self.limits, size=self.figure_px)
+
+    def handle_words(self, name: str) -> str:
+        """What dragging handle ``name`` does, in words (for its hover text).
+
+        Examples
+        --------
+        >>> ScrewSumExplorer(display="agg").handle_words("v₁ direction")
+        "direction of u₁ (v₁ a translation): drag the arrow's tip to turn it"
+        """
+        return _HANDLE_TIPS.get(name, f"drag to change {name}")
 
     def handles(self) -> list[Handle]:
         # a handle of a screw of another kind is not draggable now; named as the picture labels

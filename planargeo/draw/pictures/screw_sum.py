@@ -47,7 +47,7 @@ def _glyph_gap(w: float) -> float:
 
 
 @builder
-def screw_sum_picture(mode: str, c, *, anchors=None, view, size=(560, 500)) -> Picture:
+def screw_sum_picture(mode: str, c, *, anchors=None, view, size=(560, 500), arms=None) -> Picture:
     """The picture of one sum (module docstring).
 
     Parameters
@@ -57,13 +57,52 @@ def screw_sum_picture(mode: str, c, *, anchors=None, view, size=(560, 500)) -> P
         :func:`~planargeo.screws.twists.add_twists` or ``add_wrenches``.
     anchors : ((x1, y1), (x2, y2)), optional
         Wrenches: where the arrows sit on their lines.
+    arms : ((x, y), (x, y)) or None per term, optional
+        Twists: a translation's velocity ``u`` drawn as an arrow from this point, one unit long
+        (where its direction is dragged), labelled ``u₁`` / ``u₂``.
     """
     pic = Picture(view, size=size)
     if mode == "twists":
         _twists(pic, c)
+        for k, (t, foot) in enumerate(zip((c.v1.array, c.v2.array), arms or (None, None)), start=1):
+            if foot is not None and bool(is_ideal(t)):
+                _velocity_arm(pic, k, t, foot)
     else:
         _wrenches(pic, c, anchors)
     return pic
+
+
+#: length (data units) of a translation's velocity arrow (the explorer's direction handle sits at its tip)
+ARM = 1.0
+
+
+def _velocity_arm(pic: Picture, k: int, t, foot) -> None:
+    """Translation ``t`` (term ``k``) drawn as its velocity ``u`` from ``foot``, :data:`ARM` long: the
+    direction handle at its tip has a meaning to show (a translation moves every point alike, so
+    any foot would do)."""
+    u = np.array([float(t[0]), float(t[1])])
+    speed = math.hypot(*u)
+    if not speed > 0:
+        return
+    d = u / speed
+    a, b = np.asarray(foot, float), np.asarray(foot, float) + ARM * d
+    s = subscript(k)
+    px = np.array([d[0] * pic.kx, d[1] * pic.ky])
+    px = px / math.hypot(*px)
+    pic.path(f"u{k}", [a, b], role="twist", symbol=f"u{s}", label=f"u{s}", width=1.6 * PX_PER_PT,
+             desc=(f"translation u{s} of v{s} (4.10): {num(speed)} m/s at "
+                   f"{num(math.degrees(math.atan2(d[1], d[0])))}°, every point moving with it (drawn from "
+                   f"({num(a[0])}, {num(a[1])}) m: any point would do); drag its tip to turn it"))
+    head = 10.0                                        # the head's length (px), ending at the tip
+    pic.elements[-1]["parts"].append({"p": "arrow", "x": float(b[0] - head * px[0] / pic.kx),
+                                      "y": float(b[1] - head * px[1] / pic.ky),
+                                      "dx": float(head * px[0]), "dy": float(head * px[1])})
+    n = np.array([-px[1], px[0]])
+    n = n if (n[1], n[0]) >= (0.0, 0.0) else -n            # beside the arrow's middle, above (or right)
+    label_toward(pic.elements[-1], tuple(n), 8.0)
+    for part in pic.elements[-1]["parts"]:
+        if part["p"] == "text":
+            part["x"], part["y"] = float((a[0] + b[0]) / 2), float((a[1] + b[1]) / 2)
 
 
 def _twists(pic: Picture, c) -> None:
@@ -119,11 +158,17 @@ def _text_box(pic: Picture, p) -> tuple:
     return qx, qy, qx + bw, qy + bh
 
 
+#: pixels a label at the view's edge keeps from another pole's glyph (beyond the glyph itself): a
+#: label nearer another pole than its own arrow reads as that pole's ("v₂ at ∞" above v₃)
+EDGE_LABEL_CLEARANCE = FONT_PX
+
+
 def _edge_labels_off_the_poles(pic: Picture) -> None:
     """Move a translation's label at the view's edge ("v₂ at ∞") above or below its arrow when a
-    pole's glyph, or another label, is drawn over it where it stands (beside the arrow)."""
-    glyphs = [(p["x"], p["y"], p.get("r", 0.0) + 2.0) for e in pic.elements for p in e["parts"]
-              if p["p"] in ("glyph", "mark")]
+    pole's glyph, or another label, is drawn over it or next to it (within
+    :data:`EDGE_LABEL_CLEARANCE`) where it stands (beside the arrow)."""
+    glyphs = [(p["x"], p["y"], p.get("r", 0.0) + 2.0 + EDGE_LABEL_CLEARANCE)
+              for e in pic.elements for p in e["parts"] if p["p"] in ("glyph", "mark")]
     texts = [p for e in pic.elements for p in e["parts"] if p["p"] == "text"]
 
     def clear(p) -> bool:
@@ -144,11 +189,16 @@ def _edge_labels_off_the_poles(pic: Picture) -> None:
         for p in e["parts"]:
             if p["p"] != "text" or not p["text"].endswith(" at ∞") or not arrows or clear(p):
                 continue
-            reach = abs(arrows[0]["dy"]) / 2 + 3.0        # past the arrow's end (px), then a row on
-            tries = [(va, sign * (reach + row * 1.25 * FONT_PX)) for row in range(3)
+            a = arrows[0]
+            reach = abs(a["dy"]) / 2 + 3.0        # past the arrow's end (px), then a row on
+            tries = [(va, sign * (reach + row * 1.25 * FONT_PX)) for row in range(4)
                      for va, sign in (("bottom", 1.0), ("top", -1.0))]
+            # above or below, the label starts (ends, is centred) over the arrow, not beside it
+            foot = (a["x"] - p["x"]) * pic.kx
+            dx = {"left": foot + min(0.0, a["dx"]) - 2.0, "right": foot + max(0.0, a["dx"]) + 2.0,
+                  "center": foot + a["dx"] / 2}[p["ha"]]
             for va, dy in tries:
-                moved = dict(p, va=va, dy=p["dy"] + dy)
+                moved = dict(p, va=va, dx=dx, dy=p["dy"] + dy)
                 if clear(moved):
                     p.update(moved)
                     break
