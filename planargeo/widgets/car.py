@@ -79,7 +79,11 @@ class CarExplorer(HeldView, Described, Explorer):
 
     def make_controls(self):
         return {
-            SPEED: Step(0.0, 30.0, 0.5, 4.0, SPEED),
+            # the speed of the rear axle's middle (the car turns about the ICR on the rear axle's line):
+            # G, ahead of it, moves faster (ω times its distance from the ICR)
+            SPEED: Step(0.0, 30.0, 0.5, 4.0, "rear-axle speed V (m/s)",
+                        tip="speed V of the rear axle's middle, V = ω d (6.115); the centre of gravity G, "
+                            "farther from the ICR, moves faster: ω times its distance from the ICR"),
             # 5 cm steps: at a 2 m radius a step turns the wheel by 0.7° (a dragged radius is not jumpy)
             RADIUS: Step(2.0, 60.0, 0.05, 8.0, RADIUS),
             DRIVE: Step(-6000, 6000, 100, 0, DRIVE),
@@ -90,7 +94,10 @@ class CarExplorer(HeldView, Described, Explorer):
                           "axle, 1 on the rear axle (6.114)"),
             "radius of gyration (m)": Step(0.3, 3.0, 0.05, 1.2, "radius of gyration (m)"),
             "mass (kg)": Step(400, 3000, 50, 1200, "mass (kg)"),
-            HEADING: Step(0.0, 360.0, 1.0, 0.0, HEADING),
+            HEADING: Step(0.0, 360.0, 1.0, 0.0, HEADING,
+                          tip="heading θ: how far the car has turned about the ICR, counter-clockwise; "
+                              "at 0° the car points up the page (+y), at 90° to the left (−x). (Angles of "
+                              "blows and forces in the other explorers start from +x instead.)"),
         }
 
     def _scene_of(self, values):
