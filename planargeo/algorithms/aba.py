@@ -26,11 +26,6 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
         The kinematics fields plus ``A`` (3.38), ``d`` (3.39), ``a`` (3.42), ``f = A a + d``
         (3.13), ``qdd`` (3.41), ``tau``, and per joint ``D`` (``sᵀAs``), ``U`` (``A s``), ``u``.
 
-    Notes
-    -----
-    One state of joints with at most one coordinate each (an explorer's update) runs steps 3-4
-    on Python floats: the array code's operations in NumPy's order, so the same numbers.
-
     Raises
     ------
     ShapeError, NonFiniteError, InputError, SingularConfigurationError, NumericOverflowError
@@ -48,10 +43,6 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
     data = kinematics(model, q, qd, f_ext)
     nq, N = model.nq, model.N
     tau = np.broadcast_to(tau, shape + (nq,))
-    if shape == () and data.kappa.flags.c_contiguous and all(data.s(i).shape[-1] <= 1 for i in range(N)):
-        _one_state(model, data, tau)
-        check_finite(data.qdd, "q̈", q=q, qd=qd, tau=tau, f_ext=f_ext)
-        return data
     A, d, parents = data.I.copy(), data.p.copy(), model.parents
     Dl, Ul, Dinvl, ul = [None] * N, [None] * N, [None] * N, [None] * N
     # 3. articulated inertias, tip to base (3.35-3.39)
@@ -88,76 +79,6 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
     data.f = np.einsum("...ij,...j->...i", A, a) + d
     check_finite(qdd, "q̈", q=q, qd=qd, tau=tau, f_ext=f_ext)
     return data
-
-
-def _dot3(r, x):
-    """``einsum("ij,j->i")``'s sum of one row on floats: NumPy's order (elements 0 and 2, then 1) and
-    its zero (+0, never -0: its sums start from 0)."""
-    return 0.0 + ((r[0] * x[0] + r[2] * x[2]) + r[1] * x[1])
-
-
-def _one_state(model: Model, data: Data, tau: np.ndarray) -> None:
-    """Steps 3 and 4 of :func:`articulated_body` for one state whose joints have at most one
-    coordinate each, on Python floats: the same operations in the same order as the array code
-    (the einsum sums as :func:`_dot3`; a product summed alone, ``0.0 + x y``), without numpy's
-    per-call cost on 3-vectors."""
-    N, parents = model.N, model.parents
-    A, d, kappa = data.I.tolist(), data.p.tolist(), data.kappa.tolist()
-    origin = data.origin
-    tau_l = tau.tolist()
-    cols = [data.s(i) for i in range(N)]
-    qi_of = [model.q_slice(i).start for i in range(N)]
-    Dl, Ul, ul, uf, dinv = [None] * N, [None] * N, [None] * N, [None] * N, [None] * N
-    # 3. articulated inertias, tip to base (3.35-3.39)
-    for i in range(N - 1, -1, -1):
-        Ai, di, ki = A[i], d[i], kappa[i]
-        c = [_dot3(Ai[0], ki) + di[0], _dot3(Ai[1], ki) + di[1], _dot3(Ai[2], ki) + di[2]]
-        par = parents[i]
-        if cols[i].shape[-1]:
-            U, D = _checked_gram(np.array(Ai), cols[i], f"sᵀAs of joint {i + 1}", origin[i])
-            Dinv = 1.0 / float(D[0, 0])          # D is not 0 (the check above)
-            s0, s1, s2 = cols[i][:, 0].tolist()
-            if cols[i].strides[0] == 8:    # einsum's order on a contiguous column; on a strided one, in turn
-                sc = (s0 * c[0] + s2 * c[2]) + s1 * c[1]
-            else:
-                sc = (s0 * c[0] + s1 * c[1]) + s2 * c[2]
-            u = tau_l[qi_of[i]] - (0.0 + sc)
-            Dl[i], Ul[i], ul[i], uf[i], dinv[i] = D, U, np.array([u]), u, Dinv
-            if par >= 0:
-                U0, U1, U2 = U[:, 0].tolist()
-                W = (0.0 + U0 * Dinv, 0.0 + U1 * Dinv, 0.0 + U2 * Dinv)       # U @ Dinv
-                Ai = [[Ai[r][0] - (0.0 + W[r] * U0), Ai[r][1] - (0.0 + W[r] * U1),
-                       Ai[r][2] - (0.0 + W[r] * U2)] for r in range(3)]
-                c = [c[0] + (0.0 + W[0] * u), c[1] + (0.0 + W[1] * u), c[2] + (0.0 + W[2] * u)]
-        if par >= 0:
-            Ap, dp = A[par], d[par]
-            for r in range(3):
-                row, new = Ap[r], Ai[r]
-                row[0] += new[0]
-                row[1] += new[1]
-                row[2] += new[2]
-                dp[r] += c[r]
-    # 4. joint accelerations, base to tip (3.40-3.42)
-    a, qdd = [None] * N, [0.0] * model.nq
-    for i in range(N):
-        par = parents[i]
-        ap = a[par] if par >= 0 else [0.0, 0.0, 0.0]
-        ki = kappa[i]
-        ai = [ap[0] + ki[0], ap[1] + ki[1], ap[2] + ki[2]]
-        if Dl[i] is not None:
-            U0, U1, U2 = Ul[i][:, 0].tolist()
-            Uap = 0.0 + ((U0 * ap[0] + U2 * ap[2]) + U1 * ap[1])
-            qi = 0.0 + dinv[i] * (uf[i] - Uap)
-            qdd[qi_of[i]] = qi
-            s0, s1, s2 = cols[i][:, 0].tolist()
-            ai = [ai[0] + (0.0 + s0 * qi), ai[1] + (0.0 + s1 * qi), ai[2] + (0.0 + s2 * qi)]
-        a[i] = ai
-    data.tau, data.A, data.d = tau, np.array(A).reshape(N, 3, 3), np.array(d).reshape(N, 3)
-    data.a, data.qdd = np.array(a).reshape(N, 3), np.array(qdd)
-    data.D, data.U, data.u = Dl, Ul, ul
-    f = [[_dot3(Ar[0], x) + di[0], _dot3(Ar[1], x) + di[1], _dot3(Ar[2], x) + di[2]]
-         for Ar, x, di in zip(A, a, d)]
-    data.f = np.array(f).reshape(N, 3)
 
 
 def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
