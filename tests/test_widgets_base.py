@@ -503,9 +503,11 @@ def test_focus_options_follow_the_values_and_fall_back_to_all():
 def test_over_range_numbers_are_refused_in_the_package_words():
     ex = Shape(display="agg")
     ex.set(list="1, 1e150")
-    assert ex.message.startswith("list: numbers typed here must lie between -1e+06 and 1e+06")
+    # the numbers as a student reads them (controls.number_text), not 1e+06
+    assert ex.message.startswith("list: numbers typed here must lie between -1\u202f000\u202f000 and "
+                                 "1\u202f000\u202f000")
     ex.set(size=1e299)                                  # in the slider's range, overflows inside
-    assert "size = 1e+299 cannot be computed" in ex.message and "overflow" in ex.message
+    assert "size = 1×10²⁹⁹ cannot be computed" in ex.message and "overflow" in ex.message
     assert ex.values["size"] == 1.0 and ex.readout_values["size"] == 1e10
 
 

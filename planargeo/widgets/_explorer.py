@@ -19,7 +19,7 @@ import traitlets
 from planargeo.draw.pictures._words import words_data
 from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.widgets._motion import Budget, refusal_on_picture
-from planargeo.widgets.controls import cached
+from planargeo.widgets.controls import cached, number_text
 from planargeo.widgets.handles import Handle
 
 
@@ -282,14 +282,14 @@ def time_value(text, limit: float) -> float:
     """
     said = str(text if text is not None else "").strip()
     if not said:
-        raise InputError(f"the time t is empty: type a time in seconds, from 0 to {limit:g} s")
+        raise InputError(f"the time t is empty: type a time in seconds, from 0 to {number_text(limit)} s")
     try:
         t = float(said)
     except (TypeError, ValueError):
-        raise InputError(f"the time t must be a number of seconds, from 0 to {limit:g} s, "
+        raise InputError(f"the time t must be a number of seconds, from 0 to {number_text(limit)} s, "
                          f"got “{said}”") from None
     if not 0.0 <= t <= limit + 1e-9:
-        raise InputError(f"the time t must lie between 0 and {limit:g} s, got {said} s")
+        raise InputError(f"the time t must lie between 0 and {number_text(limit)} s, got {said} s")
     return t
 
 

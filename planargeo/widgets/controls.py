@@ -30,7 +30,7 @@ from traitlets import validate
 from planargeo.errors import InputError
 
 __all__ = ["CACHE_LIMIT", "TEXT_LIMIT", "cached", "Step", "Choice", "Toggle",
-           "make_control", "check_control", "widen", "ControlsMixin"]
+           "make_control", "check_control", "widen", "number_text", "ControlsMixin"]
 
 
 #: entries an explorer's per-parameter cache holds before it is emptied
@@ -297,7 +297,7 @@ def check_control(name: str, widget, value):
     >>> check_control("joint speeds", W.Text(), "1, 1e150")
     Traceback (most recent call last):
     ...
-    planargeo.errors.InputError: joint speeds: numbers typed here must lie between -1e+06 and 1e+06, got 1e150
+    planargeo.errors.InputError: joint speeds: numbers typed here must lie between -1 000 000 and 1 000 000, got 1e150
     """
     if isinstance(widget, (W.FloatSlider, W.IntSlider)):
         integer = isinstance(widget, W.IntSlider)
@@ -305,8 +305,8 @@ def check_control(name: str, widget, value):
         x = float(value) if real else float("nan")
         if not (widget.min <= x <= widget.max and (x.is_integer() or not integer)):
             kind = "an integer" if integer else "a number"
-            raise InputError(f"{name} must be {kind} between {widget.min:g} and {widget.max:g}, "
-                             f"got {value!r}")
+            raise InputError(f"{name} must be {kind} between {number_text(widget.min)} and "
+                             f"{number_text(widget.max)}, got {value!r}")
         return int(x) if integer else x
     if isinstance(widget, _SELECTIONS):
         options = [o[1] if isinstance(o, tuple) else o for o in widget.options]
@@ -327,13 +327,62 @@ def check_control(name: str, widget, value):
         for tok in _NUMBER.findall(value):
             x = float(tok)
             if not abs(x) <= TEXT_LIMIT:
-                raise InputError(f"{name}: numbers typed here must lie between {-TEXT_LIMIT:g} and "
-                                 f"{TEXT_LIMIT:g}, got {tok}")
+                raise InputError(f"{name}: numbers typed here must lie between {number_text(-TEXT_LIMIT)} "
+                                 f"and {number_text(TEXT_LIMIT)}, got {tok}")
     return value
 
 
 #: the largest magnitude of a number typed into a text field (refused by name, not overflowing)
 TEXT_LIMIT = 1e6
+
+#: between the groups of three digits of a long number: a narrow no-break space (a line never breaks there)
+DIGIT_GROUP = "\u202f"
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def number_text(x) -> str:
+    """``x`` as a student reads it in a message: plain decimals, never ``1e+06``.
+
+    Below a million, as ``:g`` writes it (every other number of the messages: ``-180``, ``0.05``,
+    ``10000``); from a million on, where ``:g`` would write ``1e+06``, all the digits in groups of three
+    (:data:`DIGIT_GROUP`); beyond 10¹⁵ or under 10⁻⁴, a power of ten written with superscripts.
+    Negative numbers keep the ASCII minus, as every message does.
+
+    Parameters
+    ----------
+    x : float
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> [number_text(v) for v in (-180, 0.05, 10000, 123456.7, 2.5e16, 3e-7)]
+    ['-180', '0.05', '10000', '123457', '2.5×10¹⁶', '3×10⁻⁷']
+    >>> number_text(-1e6) == '-1' + DIGIT_GROUP + '000' + DIGIT_GROUP + '000'
+    True
+    """
+    x = float(x)
+    if not math.isfinite(x):
+        return f"{x}"
+    if x == 0:
+        return "0"
+    if abs(x) >= 1e15 or abs(x) < 1e-4:
+        mant, exp = f"{x:.5e}".split("e")
+        mant = mant.rstrip("0").rstrip(".")
+        return f"{mant}×10{str(int(exp)).translate(_SUPERSCRIPT)}"
+    digits = max(0, 5 - math.floor(math.log10(abs(x))))
+    text = f"{round(x, digits):.{digits}f}"
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    sign, text = ("-", text[1:]) if text.startswith("-") else ("", text)
+    whole, dot, frac = text.partition(".")
+    if len(whole) > 6:
+        whole = f"{int(whole):,}".replace(",", DIGIT_GROUP)
+    return sign + whole + dot + frac
+
+
 _NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])|"
                      r"(?<![\w])[-+]?(?:inf(?:inity)?|nan)(?![\w])", re.IGNORECASE)
 
@@ -387,12 +436,13 @@ def numeric_failure(exc: Exception) -> bool:
 
 
 def short_text(text: str) -> str:
-    """``text`` on one line, whole (the picture wraps it onto lines of its width).
+    """``text`` on one line, whole (the picture wraps it onto lines of its width); a no-break space
+    (between a number's digit groups, :func:`number_text`) is kept.
 
     >>> short_text("rod too short:\\n  l = 1")
     'rod too short: l = 1'
     """
-    return " ".join(str(text).split())
+    return " ".join(re.split(r"[ \t\n\r\f\v]+", str(text).strip(" \t\n\r\f\v")))
 
 
 def shown_as(widget, value) -> tuple[str, str]:
@@ -416,7 +466,7 @@ def shown_as(widget, value) -> tuple[str, str]:
         return name, f"“{value}”"
     if isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
         unit = unit.replace(", ", " or ")
-        return name, f"{value:g}" + ("" if not unit else unit if unit == "°" else f" {unit}")
+        return name, number_text(value) + ("" if not unit else unit if unit == "°" else f" {unit}")
     return name, str(value)
 
 
