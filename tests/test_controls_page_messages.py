@@ -9,6 +9,8 @@ tests/browser/test_construction_enabled.py.
 """
 from __future__ import annotations
 
+import pytest
+
 from planargeo.widgets import ConstructionExplorer
 from planargeo.widgets.controls import Step
 
@@ -36,10 +38,25 @@ def _states(comm):
     return [m["state"] for m in comm.sent if m.get("method") == "update"]
 
 
-def test_a_sliders_disabled_and_value_go_in_separate_messages_value_first():
+@pytest.fixture
+def recorded():
+    """``record(widget)``: the widget sends to a :class:`Comm` (let go after the test)."""
+    widgets = []
+
+    def record(w):
+        w.comm = Comm()
+        widgets.append(w)
+        return w.comm
+
+    yield record
+    for w in widgets:
+        w.comm = None          # (a recorder left on a widget is closed at exit, after ipywidgets' tables)
+
+
+def test_a_sliders_disabled_and_value_go_in_separate_messages_value_first(recorded):
     w = Step(-180, 180, 5, 0.0, "direction (deg)").make("angle")
     w.disabled = True
-    w.comm = comm = Comm()
+    comm = recorded(w)
     with w.hold_sync():
         w.value = 60.0
         w.disabled = False
@@ -50,18 +67,18 @@ def test_a_sliders_disabled_and_value_go_in_separate_messages_value_first():
     assert states[0]["value"] == 60.0 and states[0]["description"] == "direction of F₁ (deg)"
 
 
-def test_a_disabled_state_alone_is_one_message():
+def test_a_disabled_state_alone_is_one_message(recorded):
     w = Step(0, 10, 1, 3, "n", integer=True).make("n")
-    w.comm = comm = Comm()
+    comm = recorded(w)
     w.disabled = True
     assert _states(comm) == [{"disabled": True}]
 
 
-def test_switching_construction_enables_the_direction_slider_in_a_message_of_its_own():
+def test_switching_construction_enables_the_direction_slider_in_a_message_of_its_own(recorded):
     ex = ConstructionExplorer()                      # twist addition: u₁ = 0, its direction disabled
     w = ex.controls["angle1"]
     assert w.disabled
-    w.comm = comm = Comm()
+    comm = recorded(w)
     ex.set(construction="wrench_sum")
     assert not w.disabled
     states = _states(comm)
