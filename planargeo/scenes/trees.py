@@ -13,6 +13,8 @@ array([ 0,  0,  0,  1,  0,  0, -1,  0,  0])
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from planargeo.errors import PlanargeoError, SceneError
@@ -292,8 +294,8 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True, every=N
     every : float, optional
         Also give the states every ``every`` seconds from the start (DOP853's dense output between
         its steps, projected onto the loops as each step's end is; the steps taken are the same).
-        Only a step that needs no crossing gives them: the states at ``every``, ``2·every``, …
-        before ``dt``.
+        The states at ``every``, ``2·every``, … before ``dt``; where a crossing has moved the steps off
+        that grid, each from the last step's end before it by a shorter step of the same method.
 
     Returns
     -------
@@ -301,7 +303,7 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True, every=N
         ``q``, ``qd`` at the end, ``position_residual``, ``velocity_residual`` (largest closure
         drift), ``events`` (``t`` from the start of the step), ``crossings``, ``nfev``, ``status``;
         with ``every``, ``samples``: ``(t, q, qd, position_residual)`` per state (the largest closure
-        drift up to it), none if a singular pose was crossed.
+        drift up to it).
 
     Raises
     ------
@@ -343,17 +345,52 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True, every=N
         return PlanargeoError(f"the simulation stopped at t = {start + float(res.t[-1]):.4g} s from the start of "
                               f"the step: {res.message}")
 
+    def on_grid(t):
+        return every is not None and abs(t / every - round(t / every)) < 1e-9
+
+    def keep(t, q, qd, drift):            # a state on the grid, inside the step
+        if on_grid(t) and 1e-9 < t / every and t < dt * (1 - 1e-9):
+            samples.append((round(t / every) * every, np.array(q, dtype=float), np.array(qd, dtype=float),
+                            float(drift)))
+
+    def fill(res, start, upto, before, **rk):
+        """The grid's states in ``(start, start + upto]`` on the run ``res`` from ``start``: each from the
+        last state it recorded before, by the same method (a shorter last step); the run is not changed."""
+        if every is None:
+            return
+        drift = np.maximum.accumulate(np.asarray(res.extra["position_residual"], dtype=float))
+        ts = start + np.asarray(res.t, dtype=float)
+        for g in range(math.floor(start / every + 1e-9) + 1, math.floor((start + upto) / every + 1e-9) + 1):
+            tg = g * every
+            i = int(np.searchsorted(ts, tg + 1e-9 * every, side="right")) - 1
+            if abs(ts[i] - tg) <= 1e-9 * every:
+                keep(tg, res.q[i], res.qd[i], max(before, float(drift[i])))
+                continue
+            h = tg - ts[i]
+            short = simulate_loops(model, res.q[i], res.qd[i], h, progress=False,
+                                   **(dict(method="RK4", dt=h) if rk else dict(rtol=rtol, atol=atol)))
+            if short.status == "ok":       # else no state there (that frame integrates it itself)
+                keep(tg, short.q[-1], short.qd[-1],
+                     max(before, float(drift[i]), float(np.max(short.extra["position_residual"]))))
+
     while dt - t0 > 1e-12 * max(1.0, dt):
-        sample = every is not None and t0 == 0.0 and every < dt
+        # with ``every``: a run from a time on the grid gives the grid's states (the same steps)
+        sample = every is not None and on_grid(t0) and every < (dt - t0) * (1 - 1e-9)
         res = simulate_loops(model, q, qd, dt - t0, rtol=rtol, atol=atol, progress=False,
                              dt=every if sample else None)
+        grid, before = None, pos
+        if sample:
+            grid = res
+            if res.status != "ok":         # the crossing starts at the last good step's end, as without
+                res = simulate_loops(model, q, qd, dt - t0, rtol=rtol, atol=atol, progress=False)
         if res.status == "ok":
             take(res, len(res.t) - 1, t0)
-            if sample:             # the states on the way (not the start, not the end)
-                drift = np.maximum.accumulate(np.asarray(res.extra["position_residual"], dtype=float))
-                samples = [(float(res.t[i]), np.array(res.q[i], dtype=float), np.array(res.qd[i], dtype=float),
-                            float(drift[i])) for i in range(1, len(res.t) - 1)
-                           if float(res.t[i]) < dt * (1 - 1e-9)]
+            if grid is not None:
+                drift = np.maximum.accumulate(np.asarray(grid.extra["position_residual"], dtype=float))
+                for i in range(1, len(grid.t) - 1):
+                    keep(t0 + float(grid.t[i]), grid.q[i], grid.qd[i], max(before, float(drift[i])))
+            else:
+                fill(res, t0, float(res.t[-1]), before)
             q, qd, t0 = np.array(res.q[-1], dtype=float), np.array(res.qd[-1], dtype=float), dt
             break
         if res.status != "singular" or not cross:
@@ -362,6 +399,13 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True, every=N
         good = np.flatnonzero(cond < CROSS_COND)
         k = int(good[-1]) if good.size else 0
         take(res, k, t0)
+        if grid is not None:
+            drift = np.maximum.accumulate(np.asarray(grid.extra["position_residual"], dtype=float))
+            for i in range(1, len(grid.t)):
+                if float(grid.t[i]) <= float(res.t[k]):
+                    keep(t0 + float(grid.t[i]), grid.q[i], grid.qd[i], max(before, float(drift[i])))
+        else:
+            fill(res, t0, float(res.t[k]), before)
         t0 += float(res.t[k])
         q, qd = np.array(res.q[k], dtype=float), np.array(res.qd[k], dtype=float)
         # cross with fixed RK4 steps until the condition number is low again (0.25 s at most)
@@ -374,7 +418,9 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True, every=N
                     break
             else:
                 raise stopped(rk, t0)
+            before = pos
             take(rk, len(rk.t) - 1, t0)
+            fill(rk, t0, float(rk.t[-1]), before, rk=True)
             q, qd = np.array(rk.q[-1], dtype=float), np.array(rk.qd[-1], dtype=float)
             t0 += float(rk.t[-1])
             spent += float(rk.t[-1])
@@ -382,7 +428,6 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True, every=N
             if c.size and c[-1] < CROSS_COND:
                 break
         crossings += 1
-        samples = []
         events.append({"kind": "singular pose passed", "t": t0, "cond": float(cond.max())})
     return {"q": q, "qd": qd, "position_residual": pos, "velocity_residual": vel,
             "events": sorted(events, key=lambda e: e["t"]), "crossings": crossings, "nfev": nfev, "status": "ok",
