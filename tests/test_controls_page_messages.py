@@ -85,3 +85,18 @@ def test_switching_construction_enables_the_direction_slider_in_a_message_of_its
     with_disabled = [s for s in states if "disabled" in s]
     assert with_disabled and with_disabled[-1] == {"disabled": False}, states
     assert not [s for s in states if "value" in s and "disabled" in s], states
+
+
+def test_the_pages_rounded_copy_of_a_value_set_here_is_its_echo_not_a_change():
+    """Set to 60, the page's slider (step 5 from −180) writes back 59.99999999999997: an echo, which
+    changes neither the values (60 exactly) nor the state (no new computation)."""
+    ex = ConstructionExplorer()
+    ex.set(construction="wrench_sum")
+    w = ex.controls["angle1"]
+    assert ex.values["angle1"] == 60.0
+    computes = ex.n_computes
+    w.set_state({"value": 59.99999999999997})             # as the page sends it
+    assert ex.values["angle1"] == 60.0
+    assert ex.n_computes == computes and ex.message == ""
+    w.set_state({"value": 65.0})                          # a step of the student's: a change
+    assert ex.values["angle1"] == 65.0 and ex.n_computes == computes + 1

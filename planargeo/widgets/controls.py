@@ -539,8 +539,9 @@ class ControlsMixin:
             self._echo[name] = recent
             return True
         self._shadow.pop(name, None)
-        if not from_front and isinstance(new, float) and math.isfinite(new) and \
-                not _grid_ok(new, widget.min, widget.step):
+        # every value set here may come back rounded: off the grid, to the grid's nearest value; on it,
+        # in the page's own arithmetic (60 on a step of 5 from -180 came back as 59.99999999999997)
+        if not from_front and isinstance(new, float) and math.isfinite(new):
             recent.append((now, new, _on_grid(new, widget.min, widget.step)))
             self._echo[name] = recent[-16:]
         return False
