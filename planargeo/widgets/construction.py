@@ -336,11 +336,31 @@ class ConstructionExplorer(Explorer):
         return Handle(name, where, drag)
 
     def handle_words(self, name: str) -> str:
-        """What dragging handle ``name`` of the construction shown does, in words (its hover text)."""
+        """What dragging handle ``name`` of the construction shown does, in words (its hover text).
+
+        Parameters
+        ----------
+        name : str
+            The handle's name (as the picture labels what it moves).
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> ConstructionExplorer("wrench_sum", display="agg").handle_words("f₁ direction")
+        'direction of F₁: drag it to turn the force (and set its size)'
+        """
         return _HANDLE_TIPS.get(self.construction, {}).get(name, f"drag to move {name}")
 
     def picture(self) -> dict:
-        """What is shown (:meth:`Explorer.picture`), each handle saying what its drag does."""
+        """What is shown (:meth:`Explorer.picture`), each handle saying what its drag does.
+
+        Returns
+        -------
+        dict
+        """
         pic = super().picture()
         for h in pic.get("handles", ()):
             h["desc"] = self.handle_words(h["id"])

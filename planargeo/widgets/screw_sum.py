@@ -260,6 +260,15 @@ class ScrewSumExplorer(Described, Explorer):
     def handle_words(self, name: str) -> str:
         """What dragging handle ``name`` does, in words (for its hover text).
 
+        Parameters
+        ----------
+        name : str
+            The handle's name (``v₁``, ``f₂ direction``).
+
+        Returns
+        -------
+        str
+
         Examples
         --------
         >>> ScrewSumExplorer(display="agg").handle_words("v₁ direction")
