@@ -184,7 +184,7 @@ def test_check_arguments():
 # -------------------------------------------------------------- units and round-off
 def test_round_off_prints_as_zero_relative_to_the_scene_scale():
     assert fmt(-1.2e-16, zero=1e-9) == "0"
-    assert fmt(-1.2e-16) == "-1.200e-16"
+    assert fmt(-1.2e-16) == "-1.2×10⁻¹⁶"
     assert fmt((2.0, 3e-13), zero=1e-9) == "(2, 0)"
 
 

@@ -172,7 +172,7 @@ def test_image_display_renders_png():
 
 def test_fmt():
     assert fmt(float("inf")) == "∞" and fmt(0.0) == "0" and fmt(True) == "yes"
-    assert fmt(1234567.0) == "1.235e+06" and fmt((1.0, 2.5)) == "(1, 2.5)" and fmt("<b>") == "&lt;b&gt;"
+    assert fmt(1234567.0) == "1.235×10⁶" and fmt((1.0, 2.5)) == "(1, 2.5)" and fmt("<b>") == "&lt;b&gt;"
 
 
 def test_every_explorer_is_drawn_by_the_page_without_a_figure():

@@ -219,8 +219,8 @@ def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
     --------
     >>> fmt(0.123456), fmt(float("inf")), fmt((1.0, -2.5)), fmt(True), fmt(-1.2e-16, zero=1e-9)
     ('0.1235', '∞', '(1, -2.5)', 'yes', '0')
-    >>> fmt(10116.3), fmt(123456.0), fmt(QuantityText("(0, -0.8)", "m"))
-    ('10120', '1.235e+05', '(0, -0.8)')
+    >>> fmt(10116.3), fmt(123456.0), fmt(-5.293e-08), fmt(QuantityText("(0, -0.8)", "m"))
+    ('10120', '1.235×10⁵', '-5.293×10⁻⁸', '(0, -0.8)')
     """
     if isinstance(x, QuantityText):
         return html.escape(x.numbers)
@@ -234,13 +234,42 @@ def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
         if x == 0 or abs(x) <= zero:
             return "0"
         if abs(x) >= 1e5 or abs(x) < 1e-3:
-            return f"{x:.{digits - 1}e}"
+            return power_text(x, digits)
         if abs(x) >= 10.0 ** digits:          # 10116.3 -> 10120 ("g" would write 1.012e+04)
             return f"{round(float(x), digits - 1 - int(math.floor(math.log10(abs(x))))):.0f}"
         return f"{x:.{digits}g}"
     if isinstance(x, (tuple, list, np.ndarray)):
         return "(" + ", ".join(fmt(v, digits, zero) for v in _components(x)) + ")"
     return html.escape(str(x))
+
+
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def power_text(x: float, digits: int = 4) -> str:
+    """``x`` to ``digits`` significant digits times a power of ten written with superscripts, as a
+    student reads it (and as the controls' messages write it): ``-5.293×10⁻⁸``, never ``-5.293e-08``.
+
+    Parameters
+    ----------
+    x : float
+        A finite number.
+    digits : int
+        Significant digits (trailing zeros dropped).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> power_text(-5.293e-08), power_text(1234567.0), power_text(1e-12), power_text(9.99996e-4)
+    ('-5.293×10⁻⁸', '1.235×10⁶', '1×10⁻¹²', '1×10⁻³')
+    """
+    mant, exp = f"{float(x):.{max(int(digits), 1) - 1}e}".split("e")
+    if "." in mant:
+        mant = mant.rstrip("0").rstrip(".")
+    return f"{mant}×10{str(int(exp)).translate(_SUPERSCRIPT)}"
 
 
 def _components(x) -> list:
