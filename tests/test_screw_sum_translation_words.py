@@ -65,23 +65,26 @@ def test_the_edge_label_of_a_translation_stands_by_its_own_arrow():
     assert box[0] <= max(e[0] for e in ends) and min(e[0] for e in ends) <= box[2], (box, ends)
 
 
-@pytest.mark.parametrize("k", [1, 2])
-def test_a_translations_direction_handle_is_the_tip_of_its_drawn_velocity(k):
+@pytest.mark.parametrize("k, size", [(1, 2.0), (2, 2.0), (1, -2.0)])
+def test_a_translations_direction_handle_is_the_tip_of_its_drawn_velocity(k, size):
     s = "₁₂"[k - 1]
-    ex = ScrewSumExplorer(**{f"kind{k}": "translation", f"angle{k}": 30.0, f"size{k}": 2.0})
+    ex = ScrewSumExplorer(**{f"kind{k}": "translation", f"angle{k}": 30.0, f"size{k}": size})
     assert not ex.message
     pic = ex.picture()
     v = ex.values
     handle = next(h for h in pic["handles"] if h["id"] == f"v{s} direction")
     u = element(pic, f"u{k}")
     (a, b) = next(p for p in u["parts"] if p["p"] == "path")["xy"]
-    # from the screw's point, one unit along u = size (cos angle, sin angle)
+    # from the screw's point, one unit along u = size (cos angle, sin angle) (a negative size: back)
+    sense = math.copysign(1.0, size)
     assert np.allclose(a, (v[f"x{k}"], v[f"y{k}"]))
-    assert np.allclose(b, (v[f"x{k}"] + math.cos(math.radians(30)), v[f"y{k}"] + math.sin(math.radians(30))))
+    assert np.allclose(b, (v[f"x{k}"] + sense * math.cos(math.radians(30)),
+                           v[f"y{k}"] + sense * math.sin(math.radians(30))))
     assert np.allclose((handle["x"], handle["y"]), b, atol=1e-4)
     texts = [p["text"] for p in u["parts"] if p["p"] == "text" and not p.get("hidden")]
     assert texts == [f"u{s}"]
-    assert u["symbol"] == f"u{s}" and "2 m/s" in u["desc"] and "30°" in u["desc"], u["desc"]
+    said = "at 30°" if size > 0 else "at -150°"                  # where u points
+    assert u["symbol"] == f"u{s}" and "2 m/s" in u["desc"] and said in u["desc"], u["desc"]
     assert any(p["p"] == "arrow" for p in u["parts"])
     assert ex.handle_words(handle["id"]).startswith(f"direction of u{s}")
     assert "drag its tip" in u["desc"]          # the page shows it when the handle is hovered

@@ -287,7 +287,8 @@ class ScrewSumExplorer(Described, Explorer):
             xy = (f"x{k}", f"y{k}")
             turn = (f"angle{k}", f"size{k}")
             out += [xy_handle(self, f"v{s}", *xy, when=kind_is("rotation")),
-                    arrow_handle(self, f"v{s} direction", *xy, *turn, arm=ARM, when=kind_is("translation")),
+                    arrow_handle(self, f"v{s} direction", *xy, *turn, arm=ARM, flip=True,
+                                 when=kind_is("translation")),
                     xy_handle(self, f"f{s}", *xy, when=kind_is("force")),
                     arrow_handle(self, f"f{s} direction", *xy, *turn, arm=ARM, flip=True, when=kind_is("force"))]
         return out
