@@ -125,3 +125,13 @@ def test_every_handle_sits_on_a_drawn_element_of_its_screw_and_has_words(values)
         assert near and min(near) < 2.0, (h, symbol, near)
         words = ex.handle_words(h["id"])
         assert "drag" in words and not words.startswith("drag to change") and symbol[0] in words, words
+
+
+def test_the_pages_handles_carry_each_explorers_own_words():
+    """The picture the page gets gives each handle the explorer's words (its hover text), not a generic one."""
+    from planargeo.widgets import ConstructionExplorer
+
+    for ex in (ScrewSumExplorer(display="agg"), ConstructionExplorer("wrench_sum", display="agg")):
+        handles = ex.picture()["handles"]
+        assert handles and all(h["desc"] == ex.handle_words(h["id"]) for h in handles)
+        assert not any(h["desc"].startswith("drag to change") for h in handles), handles

@@ -354,18 +354,6 @@ class ConstructionExplorer(Explorer):
         """
         return _HANDLE_TIPS.get(self.construction, {}).get(name, f"drag to move {name}")
 
-    def picture(self) -> dict:
-        """What is shown (:meth:`Explorer.picture`), each handle saying what its drag does.
-
-        Returns
-        -------
-        dict
-        """
-        pic = super().picture()
-        for h in pic.get("handles", ()):
-            h["desc"] = self.handle_words(h["id"])
-        return pic
-
     def handles(self) -> list[Handle]:
         if self.construction == "twist_sum":
             return [self._pole_handle(*p) for p in _POINTS["twist_sum"]]

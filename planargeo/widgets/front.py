@@ -264,12 +264,32 @@ class FrontMixin:
             raise PlanargeoError(f"{type(self).__name__} has no state to draw yet")
         pic = self.scene_picture(self.state, self._page_view)
         for h in self._handle_list():
-            pic.handle(h["id"], (h["x"], h["y"]), symbol=h["id"], desc=f"drag to change {h['id']}")
+            pic.handle(h["id"], (h["x"], h["y"]), symbol=h["id"], desc=self.handle_words(h["id"]))
         if self.controls["key"].value:
             self._add_key(pic)
         if self._figure_text:
             self._add_banner(pic)
         return pic.to_dict()
+
+    def handle_words(self, name: str) -> str:
+        """What dragging handle ``name`` does, in words: its hover text (explorers say more).
+
+        Parameters
+        ----------
+        name : str
+            The handle's name.
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> from planargeo.widgets import ChainExplorer
+        >>> ChainExplorer(display="agg").handle_words("link 2 end")
+        'drag to change link 2 end'
+        """
+        return f"drag to change {name}"
 
     @staticmethod
     def _key_entries(pic) -> list[tuple[str, str, str]]:
