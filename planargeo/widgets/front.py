@@ -15,6 +15,7 @@ import numpy as np
 from planargeo.draw.picture import FONT_PX
 from planargeo.draw.style import EXPLORER_MIN_WIDTH_PX
 from planargeo.errors import PlanargeoError
+from planargeo.widgets.controls import marks_bold
 from planargeo.widgets.readout import explain_html, value_texts
 
 __all__ = ["FrontMixin"]
@@ -420,7 +421,7 @@ class FrontMixin:
             name = html.escape(str(k)[:-len(said)] if unit and str(k).endswith(said) else str(k))
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
-                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{name}'>{name}</td>"
+                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{name}'>{marks_bold(name)}</td>"
                 f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
                 f"white-space:nowrap'>{text}</td>"
                 f"<td style='padding-left:3px;line-height:1.25;white-space:nowrap;color:#555'>"

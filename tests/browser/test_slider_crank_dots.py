@@ -7,8 +7,8 @@ bold symbol does (a 2 × 2 px dot).  Measured on what Chromium drew: each label 
 with a combining dot against the same element with its marks taken out; each dot must add at
 least 1.5 dark pixels (ink ≥ 50 %) and one of them nearly black.
 
-Expected to fail until the symbols with a combining mark are drawn bold in the slider labels
-(planargeo/widgets/controls.py) and readout names (planargeo/widgets/front.py): see the H4 report.
+The symbols with a combining mark are drawn bold in the slider labels (controls.marks_bold) and
+the readout's names.
 """
 from __future__ import annotations
 
@@ -33,7 +33,6 @@ def _ink(loc) -> np.ndarray:
     return 255 - np.asarray(Image.open(io.BytesIO(loc.screenshot())).convert("L")).astype(int)
 
 
-@pytest.mark.xfail(strict=True, reason="the bold symbols are not yet in front.py / controls.py (H4 report)")
 def test_every_combining_dot_of_the_slider_crank_shows(browser, tmp_path):
     nb = write_notebook(tmp_path / "dots.ipynb", ["from planargeo.widgets import SliderCrankExplorer",
                                                   "SliderCrankExplorer()"])
