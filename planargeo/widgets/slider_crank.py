@@ -135,6 +135,13 @@ class SliderCrankExplorer(SceneTime, Explorer):
             "acceleration poles": Toggle(False, "acceleration poles"),
         }
 
+    def adjust(self, values, changed):
+        # ψ₀ in (−180°, 180°], as the readout and the picture read every angle: −180° is 180°
+        out = super().adjust(values, changed)
+        if float(values["crank angle (deg)"]) <= -180.0:
+            out["crank angle (deg)"] = 180.0
+        return out
+
     def handles(self):
         # the crank pin sets ψ; the piston sets its height, the crank keeps its side
         def drag_pin(x, y):

@@ -47,6 +47,34 @@ FORCE_LENGTH = 2.4
 #: half width of the slide (m)
 BORE = 0.35
 _BODIES = ("crank", "rod", "piston")
+#: radii (m) of the arcs of ψ, θ, φ at the crank pivot, the crank pin and the wrist pin
+ARC_RADII = (0.8, 0.7, 0.9)
+
+
+def _angle_arc(pic: Picture, sym: str, centre, start: float, turn: float, radius: float, desc: str,
+               ray: float | None = None, ray_desc: str = "") -> None:
+    """The angle ``sym``: an arc of ``radius`` (m) about ``centre`` from the direction ``start`` (rad)
+    turning ``turn`` (rad, counter-clockwise positive), a dashed ray along ``ray`` (rad; default ``start``:
+    the side that is no link), its symbol just outside the arc's middle."""
+    c = np.asarray(centre, dtype=float)
+    along = start if ray is None else ray
+    line = np.array([c, c + 1.3 * radius * np.array([math.cos(along), math.sin(along)])])
+    pic.path(f"angle {sym} from", line, role="construct", symbol=f"{sym} side", color=ANGLE_COLOR,
+             width=0.7 * PX_PER_PT, dash=[2.0, 2.0], z=3,
+             desc=f"{ray_desc or 'the side'}: {sym} is measured from it, at "
+                  f"{num(180.0 - (180.0 - math.degrees(along)) % 360.0, 4)}° from the x axis")
+    n = max(2, int(math.ceil(abs(turn) / math.radians(4.0))) + 1)
+    ts = start + np.linspace(0.0, turn, n)
+    arc = c + radius * np.column_stack([np.cos(ts), np.sin(ts)])
+    pic.path(f"angle {sym}", arc, role="construct", symbol=sym, color=ANGLE_COLOR, width=0.9 * PX_PER_PT, z=3,
+             desc=desc)
+    mid = start + 0.5 * turn
+    label_at(pic, c + radius * np.array([math.cos(mid), math.sin(mid)]), sym, gap=3.0,
+             dy=3.0 * math.sin(mid), ha="left" if math.cos(mid) >= 0 else "right", va="center")
+
+
+#: colour of the joint angles' arcs and symbols
+ANGLE_COLOR = "#303030"
 
 
 def slider_crank_view(r: float, l: float, t: float):
@@ -112,19 +140,25 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
     pic.path("piston", box, role="body", symbol="3", closed=True, fill=COLORS["body"], alpha=0.6,
              color="#000000", width=1.0 * PX_PER_PT, z=4,
              desc=f"piston, body 3 (9.73): height h = {h:.4g} m, speed {num(float(v[2][1]), 4)} m/s")
-    label_at(pic, wrist + np.array([0.3, 2 * t]), "3", gap=4.0)
+    label_at(pic, wrist + np.array([0.3, t]), "3", gap=4.0, dy=0.0, va="center")     # beside it, clear of its top
     pic.marks("pins", [pivot, pin, wrist], role="body", symbol="pins", color=COLORS["ground"], size=7.0, z=6,
               desc=f"the pins: crank pivot (0, 0) m, crank pin ({num(pin[0])}, {num(pin[1])}) m, "
                    f"wrist pin ({num(wrist[0])}, {num(wrist[1])}) m")
-    # the joint angles a little way along their links (the pins are the forces' places)
-    for sym, at, meaning, val in (("ψ", 0.3 * pin, "crank angle", psi),
-                                  ("θ", pin + 0.2 * (wrist - pin), "turn of the rod from the crank, at the crank pin "
-                                   "(from closing the loop)", theta),
-                                  ("φ", wrist + np.array([0.0, 2.8 * t]), "turn of the piston from the rod, at the "
-                                   "wrist pin (the piston itself stays upright)", phi)):
-        pic.marks(f"angle {sym}", np.zeros((0, 2)), role="text", symbol=sym, color="#303030",
-                  desc=f"joint angle (9.6): {meaning}, {sym} = {num(val, 4)}°")
-        label_at(pic, at, sym, gap=5.0)
+    # the joint angles (9.6) as arcs at their joints, each from the direction it is measured from (a short
+    # dashed ray: the x axis, the crank produced, the rod produced) to its link, the symbol by the arc
+    a_crank = math.atan2(pin[1] - pivot[1], pin[0] - pivot[0])
+    a_rod = math.atan2(wrist[1] - pin[1], wrist[0] - pin[0])
+    # (φ, from the rod produced to the piston's axis, is drawn as its vertical angle below the wrist pin:
+    # from the rod to the piston's axis produced downwards, clear of the piston)
+    for sym, centre, start, val, radius, ray, meaning, ray_desc in (
+            ("ψ", pivot, 0.0, psi, ARC_RADII[0], None, "crank angle, from the x axis to the crank", "the x axis"),
+            ("θ", pin, a_crank, theta, ARC_RADII[1], None, "turn of the rod from the crank produced, at the crank "
+             "pin (from closing the loop)", "the crank produced beyond the crank pin"),
+            ("φ", wrist, a_rod + math.pi, phi, ARC_RADII[2], -math.pi / 2, "turn of the piston from the rod, at "
+             "the wrist pin (the piston itself stays upright; drawn below the pin, between the rod and the "
+             "piston's axis produced)", "the piston's axis produced below the wrist pin")):
+        _angle_arc(pic, sym, centre, start, math.radians(val), radius,
+                   f"joint angle (9.6): {meaning}, {sym} = {num(val, 4)}°", ray, ray_desc)
     if overlays.get("reaction forces"):
         size_of = {k: math.hypot(*np.asarray(x.wrench, float)[:2]) for k, x in reactions.items()}
         fmax = max(size_of.values(), default=0.0)
