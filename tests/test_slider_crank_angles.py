@@ -17,14 +17,19 @@ ANGLE = "crank angle (deg)"
 
 
 @pytest.mark.parametrize("set_to", [-180.0, 180.0])
-def test_the_crank_angle_reads_the_same_on_the_slider_and_in_the_readout(set_to):
+def test_the_crank_angle_reads_the_same_on_the_slider_in_the_readout_and_on_the_picture(set_to):
     for ex in (SliderCrankExplorer(display="agg", **{ANGLE: set_to}), SliderCrankExplorer(display="agg")):
         ex.set(**{ANGLE: set_to})
         assert ex.message == ""
-        assert ex.controls[ANGLE].value == ex.values[ANGLE] == 180.0
-        assert ex.readout_values["crank angle ψ"] == pytest.approx(180.0, abs=1e-9)
-    ex.set(**{ANGLE: -179.0})
-    assert ex.controls[ANGLE].value == -179.0 and ex.readout_values["crank angle ψ"] == pytest.approx(-179.0)
+        assert ex.controls[ANGLE].value == ex.values[ANGLE] == set_to
+        assert ex.readout_values["crank angle ψ"] == set_to
+        arc = next(np.asarray(p["xy"], float) for e in ex.picture()["elements"] if e["id"] == "angle ψ"
+                   for p in e["parts"] if p["p"] == "path")
+        assert sum(_turn(p, q) for p, q in zip(arc[:-1], arc[1:])) == pytest.approx(set_to, abs=0.05)
+    # once Play has turned the crank, ψ reads in (−180°, 180°]
+    ex = SliderCrankExplorer(display="agg", **{ANGLE: -180.0, "crank speed": -20.0})
+    ex.advance(2)
+    assert -180.0 < ex.readout_values["crank angle ψ"] <= 180.0 and ex.readout_values["crank angle ψ"] > 150.0
 
 
 def _turn(a, b) -> float:

@@ -135,13 +135,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
             "acceleration poles": Toggle(False, "acceleration poles"),
         }
 
-    def adjust(self, values, changed):
-        # ψ₀ in (−180°, 180°], as the readout and the picture read every angle: −180° is 180°
-        out = super().adjust(values, changed)
-        if float(values["crank angle (deg)"]) <= -180.0:
-            out["crank angle (deg)"] = 180.0
-        return out
-
     def handles(self):
         # the crank pin sets ψ; the piston sets its height, the crank keeps its side
         def drag_pin(x, y):
@@ -207,6 +200,8 @@ class SliderCrankExplorer(SceneTime, Explorer):
         st = {"sol": sol, "reactions": slider_crank_reactions(sol), "q": q, "qd": qd, "r": r, "l": l, "t": thick,
               "h": h, "v": sol.data.v, "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float), "E": E,
               "message": "", "drive": drive, "time": t, "E0": run["E0"], "drift": drift, "passed": passed}
+        # ψ as read: at t = 0 the slider's ψ₀ itself (its −180° is not turned into 180°), then in (−180°, 180°]
+        st["psi_deg"] = float(values["crank angle (deg)"]) if t == 0.0 else wrapped_degrees(psi)
         name = dead_centre_at(psi, DEAD_CENTRE_TOL)
         st["configuration"] = name
         if name and t == 0.0:
@@ -227,7 +222,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return slider_crank_picture(state["sol"].data.pose, r=state["r"], t=state["t"], q=state["q"], reactions=state["reactions"],
                                     v=state["v"], a=state["a"], h=state["h"], overlays=overlays,
                                     view=view or slider_crank_view(state["r"], state["l"], state["t"]),
-                                    banner=self._banner(state), size=self.figure_px)
+                                    banner=self._banner(state), psi=state["psi_deg"], size=self.figure_px)
 
     def readout_of(self, state):
         sol = state["sol"]
@@ -241,7 +236,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
         driven = state["drive"] == "constant-speed"
         drift = (state["E"] - E0) / abs(E0) if E0 else 0.0
         out = {
-            "t": now, "crank angle ψ": wrapped_degrees(qq[0]),
+            "t": now, "crank angle ψ": state["psi_deg"],
             "crank speed ψ̇": state["qd"][0], "rod joint angle θ": wrapped_degrees(qq[1]),
             "wrist joint angle φ": wrapped_degrees(qq[2]),
             "piston height h": state["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],

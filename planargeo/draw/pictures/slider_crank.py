@@ -99,7 +99,8 @@ def slider_crank_view(r: float, l: float, t: float):
 
 @builder
 def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, h: float,
-                         overlays: dict, view, banner: str = "", size=(560, 620)) -> Picture:
+                         overlays: dict, view, banner: str = "", psi: float | None = None,
+                         size=(560, 620)) -> Picture:
     """The picture of one state of the slider-crank (module docstring).
 
     Parameters
@@ -118,12 +119,18 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
         ``{"reaction forces", "velocity poles", "acceleration poles": shown}``.
     banner : str
         A dead centre named ("" for none).
+    psi : float, optional
+        The crank angle ψ (degrees) as the readout reads it (the slider's −180° at the start); default
+        ``q[0]`` in (−180°, 180°].
     """
     pose = np.asarray(pose, dtype=float)
     pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 6))
     x0, x1, y0, y1 = pic.box
     pivot, pin, wrist = pose[0, :2], pose[1, :2], pose[2, :2]
+    read_psi = psi
     psi, theta, phi = (180.0 - (180.0 - math.degrees(float(x))) % 360.0 for x in q)    # in (−180°, 180°]
+    if read_psi is not None:
+        psi = float(read_psi)
     pic.path("slide", [[-BORE, y0], [-BORE, y1], [np.nan, np.nan], [BORE, y0], [BORE, y1]], role="construct",
              symbol="slide", color=COLORS["ground"], width=1.0 * PX_PER_PT, dash=[4.0, 3.0], z=1,
              desc=f"the slide (9.6): the piston moves along it, {2 * BORE:.3g} m wide")
