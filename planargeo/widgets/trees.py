@@ -50,8 +50,9 @@ FRAME_RATE = 60
 CHECKPOINT = 15 / FRAME_RATE
 #: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
 T_END = 60.0
-#: evaluations of the dynamics one update may spend (~2 ms each under load; the default spends about
-#: 280 per scene second, 1,700 under gravity: one update reaches about 7 scene seconds)
+#: evaluations of the dynamics one update may spend (~1-2 ms each under load; the default spends about
+#: 110 per scene second and ~800 per flat loop passed: one update reaches about 7 scene seconds, 2 under
+#: gravity)
 UPDATE_EVALS = 2_500
 #: room (m) around the links in the view of a pose: the largest force's arrow and its label
 ROOM = FORCE_LENGTH + 0.3
