@@ -23,3 +23,25 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 @pytest.fixture
 def rng():
     return np.random.default_rng(12345)
+
+
+@pytest.fixture(autouse=True)
+def _no_foreign_event_loop(request, monkeypatch):
+    """Outside the browser tests, page requests are answered as they arrive.
+
+    The browser tests' Playwright (a session fixture) leaves its event loop running in this
+    thread; a canvas would then defer each answer to that loop (``PictureCanvas.defer``, for a
+    kernel's idle message) and a kernel-side test would wait for it in vain.  Tests that want
+    deferral make a loop of their own, in a thread of their own, and set ``defer`` on the canvas.
+    """
+    if "browser" in request.node.nodeid.split("::")[0].split("/"):
+        return
+    import asyncio
+
+    try:
+        asyncio.get_running_loop()
+    except RuntimeError:
+        return
+    from planargeo.widgets.canvas import PictureCanvas
+
+    monkeypatch.setattr(PictureCanvas, "defer", False)

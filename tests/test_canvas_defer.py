@@ -20,6 +20,7 @@ def _alone(fn):
 
 def _canvas(sent: list) -> PictureCanvas:
     c = PictureCanvas(on_drag=lambda h, x, y: None)
+    c.defer = True                     # the default, whatever tests/conftest.py set for this thread
     c.picture = {"handles": [{"id": "P", "x": 0.0, "y": 0.0}]}
     c.send = lambda msg, *a, **k: sent.append(msg)
     return c

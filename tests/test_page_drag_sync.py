@@ -193,3 +193,25 @@ def test_in_a_kernel_the_held_values_go_after_drag_sync_s_even_without_a_release
     assert held
     last = {kind: v for kind, v in log}
     assert last["x"] == ex.values["x"] == pytest.approx(0.6) and last["readout"] == ex.readout.value
+
+
+def test_a_refusal_the_explorer_shows_is_not_said_a_third_time_beside_reset_view():
+    """The explorer's message line and picture show a refused step; the ack marks it said, so the
+    page's status line beside "reset view" stays empty.  A refusal the explorer does not show (a
+    handle the picture no longer has) is still said there."""
+    from planargeo.widgets.canvas import PictureCanvas
+
+    ex = Dot(display="page")
+    acks = []
+    ex.canvas.send = lambda m, *a, **k: acks.append(m) if m.get("type") == "ack" else None
+    _drag(ex, "dot", 1.8, 0.5, 1)                              # x > 1.5: refused
+    assert acks[-1]["ok"] is False and acks[-1]["said"] is True
+    assert acks[-1]["message"] == ex.message and "x must not exceed 1.5" in ex.figure_text
+    _drag(ex, "no such handle", 0.0, 0.0, 2)
+    assert acks[-1]["ok"] is False and "said" not in acks[-1] and "no handle" in acks[-1]["message"]
+    bare = PictureCanvas(on_drag=lambda h, x, y: (_ for _ in ()).throw(SceneError("too far")))
+    bare.picture = {"handles": [{"id": "h", "x": 0.0, "y": 0.0}], "elements": []}
+    got = []
+    bare.send = lambda m, *a, **k: got.append(m)
+    bare._on_msg(None, {"type": "drag", "id": "h", "x": 1.0, "y": 0.0, "seq": 1}, None)
+    assert got[-1]["ok"] is False and got[-1]["message"] == "too far" and "said" not in got[-1]

@@ -17,6 +17,15 @@ from planargeo.widgets.canvas import PictureCanvas
 FRAME_S = 0.03          # wall seconds each frame's clock advances (set by the test's clock)
 
 
+def _run(main) -> None:
+    """``asyncio.run(main())`` in a thread of its own: its own event loop, whatever loop another
+    test (the browser tests' Playwright) left running in this thread."""
+    import concurrent.futures
+
+    with concurrent.futures.ThreadPoolExecutor(1) as pool:
+        pool.submit(lambda: asyncio.run(main())).result()
+
+
 def _playing_chain():
     """A chain playing at 1× on a clock that moves FRAME_S seconds per frame, and what its canvas sends."""
     ex = ChainExplorer(display="page", links=3)
@@ -41,7 +50,7 @@ def _ticks(c, n: int, gap: float = 0.15) -> None:
         for k in range(n):
             c._on_msg(None, {"type": "tick", "seq": k, "client": "t"}, None)
             await asyncio.sleep(gap)
-    asyncio.run(run())
+    _run(run)
 
 
 def test_each_tick_brings_a_second_frame_and_the_frames_chain():
@@ -160,7 +169,7 @@ def test_play_works_ahead_between_frames_and_shows_the_same_times():
             await asyncio.sleep(0.05)
             if motion.reached >= 2 * motion.chunk:
                 return
-    asyncio.run(run())
+    _run(run)
     assert motion.reached >= 2 * motion.chunk and ex.shown_values["time (s)"] < motion.chunk
     fresh = ChainExplorer(display="agg", links=3)
     fresh.set(**{"time (s)": ex.shown_values["time (s)"]})
@@ -191,7 +200,7 @@ def test_plays_first_frame_is_computed_ahead_once_the_explorer_is_shown():
         ex.advance(1)
         assert ex.values["time (s)"] > 0.0 and calls[0] == 0
 
-    asyncio.run(run())
+    _run(run)
 
 
 def test_the_time_follows_every_frame_and_everything_agrees_when_play_stops():
@@ -260,7 +269,7 @@ def test_a_stop_that_arrives_while_a_frame_is_computed_ends_play_at_that_frame()
         await asyncio.sleep(0.3)
         consumer.cancel()
 
-    asyncio.run(run())
+    _run(run)
     assert not ex.play_control.playing and not c.playing
     frames = [m for m in sent if m["type"] == "update" or m.get("update")]
     assert [m["type"] for m in sent] == ["ack"] and len(frames) == 1, [m["type"] for m in sent]

@@ -163,7 +163,7 @@ function render({ model, el }) {
       ch.port1.onmessage = () => { done.tFrame = performance.now(); };
       ch.port2.postMessage(0);
     });
-    say(m.ok === false && m.message ? m.message : "");
+    say(m.ok === false && m.message && !m.said ? m.message : "");
     if (done && done.type === "sync") syncAsked = false;
     if (done && done.type === "tick" && m.ok === false) tickHalted = true;
     if (done && done.type === "view" && !m.update?.head && !pending.has("view")) clearLocalView();

@@ -340,6 +340,9 @@ class PictureCanvas(anywidget.AnyWidget):
         Wraps the handling of each request *and its reply*: e.g. other widgets' syncs
         held until the reply (with the new picture) has gone, so that the page paints
         the picture before it works on them.
+    said : callable ``(message) -> bool``, optional
+        Whether a refusal's message is already shown beside the canvas (an explorer's message
+        line and picture): then the page does not repeat it beside "reset view".
     **kwargs
         Passed to :class:`anywidget.AnyWidget`.
 
@@ -383,7 +386,8 @@ class PictureCanvas(anywidget.AnyWidget):
                  on_tick: Callable[[], Any] | None = None,
                  around: Callable[[], Any] | None = None,
                  on_idle: Callable[[float], Any] | None = None,
-                 on_release: Callable[[str], Any] | None = None, **kwargs):
+                 on_release: Callable[[str], Any] | None = None,
+                 said: Callable[[str], bool] | None = None, **kwargs):
         # what the page holds (set before the widget opens: opening reads the snapshot)
         self.version = 0
         self.last_update = None
@@ -408,6 +412,7 @@ class PictureCanvas(anywidget.AnyWidget):
         self.on_tick = on_tick
         self.on_idle = on_idle
         self.on_release = on_release
+        self.said = said
         self.around = around or contextlib.nullcontext
         # never wider than its container (ipywidgets' layout owns the box's inline style): a
         # figure too wide to shrink scrolls inside the widget instead of being cut off
@@ -689,6 +694,8 @@ class PictureCanvas(anywidget.AnyWidget):
             ack["desc"], ack["id"] = extra["desc"], extra["id"]
         if update is not None:
             ack["update"] = update
+        if not ack["ok"] and self.said is not None and self.said(ack["message"]):
+            ack["said"] = True           # shown beside the canvas already: not a third time
         ack["ms"] = round((time.perf_counter() - t0) * 1e3, 1)     # the kernel's time (benchmarks)
         self.send(ack)
         if extra.get("extra") and ack["ok"] and self.playing:
@@ -724,7 +731,8 @@ class PictureCanvas(anywidget.AnyWidget):
             self.n_extra_frames += 1
             self._schedule_idle()
         except PlanargeoError as exc:
-            self.send({"type": "halt", "message": str(exc)})
+            text = str(exc)
+            self.send({"type": "halt", "message": "" if self.said is not None and self.said(text) else text})
         except Exception as exc:  # noqa: BLE001 - nothing escapes into the kernel's event loop
             self.send({"type": "halt", "message": f"not taken: {type(exc).__name__}: {exc}"})
 

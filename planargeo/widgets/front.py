@@ -240,7 +240,7 @@ class FrontMixin:
 
         # the controls', readout's and message's syncs leave after each reply (the picture first)
         return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to, around=self._page_after,
-                             on_release=self._page_release)
+                             on_release=self._page_release, said=lambda text: bool(text) and text == self._message)
 
     def redraw(self) -> None:
         """Send the shown state's picture to the front end (the page's canvas, or a PNG)."""
