@@ -271,3 +271,10 @@ def test_a_links_change_keeps_one_joint_value_per_joint():
     # the state is the one the boxes say: a fresh explorer so set shows the same
     fresh = ChainExplorer(display="agg", links=2, **{LIST_Q: "10, 20", "joint speeds": "1, 2"})
     assert ex.readout_values == pytest.approx(fresh.readout_values)
+
+
+def test_a_pole_at_the_base_is_described_at_0_0_not_minus_0():
+    """v₁'s pole is the base joint (0, 0): its x is −v_y/ω = −0.0 in floating point, which read "(-0, 0) m"."""
+    ex = ChainExplorer(display="agg", **{"velocity poles": True})
+    v1 = next(e for e in ex.picture()["elements"] if e["id"] == "v1")
+    assert "at (0, 0) m" in v1["desc"] and "-0" not in v1["desc"], v1["desc"]

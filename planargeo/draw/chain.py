@@ -69,7 +69,8 @@ def _where(p) -> str:
     w = float(p[2])
     if w != 0.0:                              # planargeo.draw.geometry.point_xy, on floats
         x, y = -float(p[1]) / w, float(p[0]) / w
-        if math.isfinite(x) and math.isfinite(y):
+        if math.isfinite(x) and math.isfinite(y):   # round-off below a nanometre and −0 read 0
+            x, y = (0.0 if abs(v) < 1e-9 else v for v in (x, y))
             return f"at ({x:.3g}, {y:.3g}) m"
     return "at infinity"
 
