@@ -29,6 +29,7 @@ import traitlets
 from traitlets import validate
 
 from planargeo.errors import InputError
+from planargeo.widgets.readout import power_text
 
 #: a symbol with combining marks above it (ψ̇, q̈)
 _MARKED = re.compile(r"(\S[\u0300-\u036f]+)")
@@ -366,7 +367,6 @@ TEXT_LIMIT = 1e6
 
 #: between the groups of three digits of a long number: a narrow no-break space (a line never breaks there)
 DIGIT_GROUP = "\u202f"
-_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
 
 def number_text(x) -> str:
@@ -398,9 +398,7 @@ def number_text(x) -> str:
     if x == 0:
         return "0"
     if abs(x) >= 1e15 or abs(x) < 1e-4:
-        mant, exp = f"{x:.5e}".split("e")
-        mant = mant.rstrip("0").rstrip(".")
-        return f"{mant}×10{str(int(exp)).translate(_SUPERSCRIPT)}"
+        return power_text(x, 6)
     digits = max(0, 5 - math.floor(math.log10(abs(x))))
     text = f"{round(x, digits):.{digits}f}"
     if "." in text:
