@@ -118,7 +118,13 @@ class ImpulseExplorer(Described, Explorer):
     def mechanism_points(self):
         pts = super().mechanism_points()
         st = self.state
-        return pts if st is None else np.vstack([pts, np.asarray(st.extra["outline"], dtype=float)])
+        if st is None:
+            return pts
+        outline = np.asarray(st.extra["outline"], dtype=float)
+        t = float(self.values["t"])
+        if t > 0.0 and st.params["support"] != "held":   # free and moving: the body where it is now
+            return moved_outline(outline, st.extra["dv"], t, np.asarray(st.quantities["com"], dtype=float))
+        return np.vstack([pts, outline])
 
     def scene_picture(self, state, view=None):
         return impulse_picture(state, t=float(self.values["t"]), view=view or self._view(), size=self.figure_px)

@@ -180,8 +180,8 @@ class TreeExplorer(HeldView, Described, SceneTime, Explorer):
     _play_carry = (None, 0.0)       # (the time Play showed last, the clock's seconds past it)
 
     def play_step(self, values, dt):
-        """While Play runs, its time on the grid of :data:`FRAME_RATE` (the states there are kept with
-        the checkpoints: a frame integrates nothing); the seconds past it are carried to the next step."""
+        # while Play runs, its time on the grid of FRAME_RATE (the states there are kept with the
+        # checkpoints: a frame integrates nothing); the seconds past it are carried to the next step
         pc = self.play_control
         if pc is None or not pc.playing:
             return super().play_step(values, dt)

@@ -23,7 +23,8 @@ from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import force, num, pair, where
 from planargeo.draw.style import COLORS
 from planargeo.mechanics.impulse import moved_points
-from planargeo.screws.inertia import Inertia, percussion_axis
+from planargeo.screws.inertia import percussion_axis
+from planargeo.screws.twists import inertia_matrix
 
 __all__ = ["impulse_picture", "moved_outline", "twist_at"]
 
@@ -77,6 +78,19 @@ def twist_at(dv, t: float, com=None) -> np.ndarray:
     Held (``com`` None) it is ``dv`` at all times; free, ``v_c`` and ``ω`` stay, ``c`` moves (see
     :func:`moved_outline`), so the velocity pole moves with the centre of mass.
 
+    Parameters
+    ----------
+    dv : array_like (3,)
+        The twist the blow gave, at ``t = 0``.
+    t : float
+        Seconds after the blow.
+    com : array_like (2,), optional
+        The free body's centre of mass at ``t = 0``; None: the body is held.
+
+    Returns
+    -------
+    numpy.ndarray (3,)
+
     Examples
     --------
     >>> twist_at([0.0, 1.0, 1.0], 2.0, com=[1.0, 0.0]).round(12).tolist()   # c at (1, 4) moving at (0, 2)
@@ -123,7 +137,8 @@ def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
                    "its centre of mass moving straight on" + (" as it turns" if dv[2] else "")) + f": mass m = {num(prm['m'])} kg", z=2)
     com = moved_outline(com0, dv, t, c0) if t > 0 else com0
     grip_at = moved_outline(np.zeros(2), dv, t, c0) if t > 0 and not held else np.zeros(2)
-    I = Inertia.from_mass(prm["m"], com, radius_of_gyration=q["rho"]).matrix if t > 0 else ex["I"]
+    # moved: its matrix built as is (a free body far from the origin is ill-conditioned there, yet definite)
+    I = inertia_matrix(prm["m"], com, prm["m"] * q["rho"] ** 2) if t > 0 else ex["I"]
     pic.conic("I", I, role="inertia", symbol="I (ρ)", label="I (ρ)",
               desc=f"the body's inertia, its circle of gyration about c (5.4): ρ = {num(q['rho'])} m")
     pic.point("c", [com[1], -com[0], 1.0], role="twist", color="#000000", glyph=False, size=5.0, symbol="c",
