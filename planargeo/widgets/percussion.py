@@ -20,7 +20,7 @@ from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygon
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy, is_ideal
 from planargeo.draw.pictures._words import num
-from planargeo.widgets.readout import Decimals, point_value, scene_decimals
+from planargeo.widgets.readout import point_value
 from planargeo.widgets._explorer import Described, HeldView, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
@@ -113,6 +113,9 @@ class PercussionExplorer(HeldView, Described, Explorer):
     slug = "percussion"
     figsize = (6.0, 4.8)
     limits = (-0.9, 1.6, -0.9, 0.9)
+    #: the scene is 1 m across: numbers below 0.1 mm are round-off left by a drag (the pole set
+    #: from a dragged axis: −1.468e-07 m), and read 0
+    zero_tol = 1e-4
     display_controls = ("angular accel. α",)
 
     def make_controls(self):
@@ -132,10 +135,6 @@ class PercussionExplorer(HeldView, Described, Explorer):
         }
 
     def __init__(self, **kw):
-        # lengths read to the scene's precision (4 digits at its scale): round-off left by a drag of
-        # the axis reads 0.000 m, not -1.468e-07 m (the values themselves are not changed)
-        places = scene_decimals(self.scale)
-        self.units = {k: Decimals(u, places) if u == "m" else u for k, u in type(self).units.items()}
         super().__init__(**kw)
         # a greyed pole slider shows no number: the impact's pole is elsewhere (its tooltip says where)
         for name in ("pole x", "pole y"):

@@ -6,9 +6,8 @@ a vector whose components differ in unit names each after its number
 (``"(1 m/s, -1.5 m/s, 3 rad/s)"``).  A unit follows numbers only (never a word, "at rest"), and
 reads as a student writes it: ``kg⁻¹`` for ``1/kg`` (never ``0 1/kg``).  Numbers keep 4
 significant digits, plain from 0.001 to 100000 (``10120``, not ``1.012e+04``); round-off prints
-as ``0``, and in a unit given as :class:`Decimals` so does a length below the scene's
-resolution (``0 m``, never ``-1.468e-07 m``); a point at infinity
-(:func:`~planargeo.geometry.projective.is_ideal`) reads "at infinity (direction (dx, dy))".
+as ``0``; a point at infinity (:func:`~planargeo.geometry.projective.is_ideal`) reads
+"at infinity (direction (dx, dy))".
 """
 from __future__ import annotations
 
@@ -23,7 +22,7 @@ import numpy as np
 from planargeo.draw.picture import plain_text
 from planargeo.geometry.projective import direction, is_ideal, to_xy
 
-__all__ = ["QuantityText", "Decimals", "scene_decimals", "fixed", "fmt", "unit_text", "point_text", "point_value",
+__all__ = ["QuantityText", "fmt", "unit_text", "point_text", "point_value",
            "value_text", "value_texts", "split_units", "explain_html", "is_numeric", "plain_symbol"]
 
 #: units that mean "dimensionless": nothing is written
@@ -62,107 +61,6 @@ class QuantityText(str):
 
     def __reduce__(self):
         return (QuantityText, (self.numbers, self.unit))
-
-
-class Decimals(str):
-    """A unit whose numbers below its resolution, ``decimals`` places, read 0 (:func:`fixed`).
-
-    It is the unit itself (a ``str``, equal to ``"m"``); :func:`value_texts` writes the numbers
-    of a value in it with :func:`fixed`: a length below the scene's resolution -- round-off left
-    by a drag -- reads ``0 m``, as at the start, not ``-1.468e-07 m``; the others keep their 4
-    significant digits (the value itself is not changed).
-
-    Parameters
-    ----------
-    unit : str
-        The unit.
-    decimals : int
-        Decimal places kept (≥ 0): the scene's resolution (:func:`scene_decimals`).
-
-    Examples
-    --------
-    >>> u = Decimals("m", 4)
-    >>> u == "m", u.decimals, value_text(-1.468e-07, u), value_text((0.496831, 2e-05), u)
-    (True, 4, '0 m', '(0.4968, 0) m')
-    """
-
-    decimals: int
-
-    def __new__(cls, unit: str, decimals: int) -> "Decimals":
-        self = super().__new__(cls, unit)
-        self.decimals = max(int(decimals), 0)
-        return self
-
-    def __reduce__(self):
-        return (Decimals, (str(self), self.decimals))
-
-
-def scene_decimals(scale: float, digits: int = 4) -> int:
-    """Decimal places that keep ``digits`` significant digits of a tenth of the scene's size ``scale``.
-
-    Parameters
-    ----------
-    scale : float
-        The scene's length scale (> 0), in the unit written.
-    digits : int
-        Significant digits (the readout's 4).
-
-    Returns
-    -------
-    int
-        At least 0.
-
-    Examples
-    --------
-    >>> scene_decimals(1.0), scene_decimals(0.3), scene_decimals(5.0), scene_decimals(250.0)
-    (4, 5, 4, 2)
-    """
-    return max(digits - int(math.floor(math.log10(abs(float(scale))))), 0)
-
-
-def fixed(x: Any, decimals: int, digits: int = 4) -> str:
-    """The numbers of a readout value as :func:`fmt` writes them, with a resolution of ``decimals`` places.
-
-    A number that rounds to 0 at ``decimals`` places reads ``0`` (never ``-0``), one below 0.001
-    rounded to ``decimals`` places in plain decimals; the others keep their ``digits`` significant
-    digits, as in every readout.
-
-    Parameters
-    ----------
-    x : Any
-        A number or a vector of numbers (anything else: :func:`fmt`).
-    decimals : int
-        Decimal places of the resolution.
-    digits : int
-        Significant digits.
-
-    Returns
-    -------
-    str
-        HTML-safe text.
-
-    Examples
-    --------
-    >>> fixed(-1.468e-07, 4), fixed((0.616925, -2e-19), 4), fixed(2.719e-04, 4), fixed(1.00933, 4)
-    ('0', '(0.6169, 0)', '0.0003', '1.009')
-    >>> fixed(0.09955, 4), fixed(-4.9e-05, 4)
-    ('0.09955', '0')
-    >>> fixed(float("inf"), 4), fixed(12, 4), fixed("at rest", 4)
-    ('∞', '12', 'at rest')
-    """
-    if isinstance(x, (bool, np.bool_, int, np.integer, QuantityText)) or not is_numeric(x):
-        return fmt(x, digits)
-
-    def text(v: float) -> str:
-        r = round(v, decimals) + 0.0 if math.isfinite(v) else v        # + 0.0: never -0
-        if r == 0.0:
-            return "0"
-        # below 0.001 in plain decimals (its digits are the scene's); above, as every number
-        return f"{r:.{decimals}f}".rstrip("0") if abs(v) < 1e-3 else fmt(v, digits)
-
-    if isinstance(x, (tuple, list, np.ndarray)):
-        return "(" + ", ".join(text(float(v)) for v in _components(x)) + ")"
-    return text(float(x))
 
 
 _FACTOR = re.compile(r"^([A-Za-zΩμ°]+)([²³]?)$")
@@ -389,8 +287,7 @@ def value_texts(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> t
     >>> value_texts(2.5, "m"), value_texts((1.0, 2.0), ("m", "rad"))
     (('2.5', '2.5 m'), ('(1, 2)', '(1 m, 2 rad)'))
     """
-    places = getattr(unit, "decimals", None)
-    text = fmt(x, digits, zero) if places is None else fixed(x, places, digits)
+    text = fmt(x, digits, zero)
     return text, _with_unit(text, x, unit, zero, digits)
 
 
