@@ -45,7 +45,9 @@ def _playing_chain():
     return ex, c, sent
 
 
-def _ticks(c, n: int, gap: float = 0.15) -> None:
+def _ticks(c, n: int, gap: float = 0.3) -> None:
+    # the extra frame comes at most 0.1 s after its tick (EXTRA_MIN_S..0.1): a gap of 0.3 s leaves
+    # it time on a loaded machine before the next tick would cancel it (the clock itself is fake)
     async def run():
         for k in range(n):
             c._on_msg(None, {"type": "tick", "seq": k, "client": "t"}, None)
