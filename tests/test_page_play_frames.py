@@ -221,7 +221,7 @@ def test_the_time_follows_every_frame_and_everything_agrees_when_play_stops():
     for k, w in ex.controls.items():
         w._send = recorder(k)
     ex.readout._send = recorder("readout")
-    _ticks(c, 4)
+    _ticks(c, 4, gap=0.15)                     # faster than Play's syncs: values are held at Stop
     frames = [i for i, (kind, _v) in enumerate(log) if kind == "frame"]
     assert len(frames) == 8
     after = [log[i + 1:j] for i, j in zip(frames, frames[1:] + [len(log)])]
