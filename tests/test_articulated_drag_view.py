@@ -12,33 +12,16 @@ import pytest
 
 from planargeo.widgets.articulated import ArticulatedExplorer
 
+from _page_drag import page_drag as drag
+
 THETA = "base θ₁ (deg)"
 
 
 def page_drag(ex, name, dx_px, dy_px, steps):
-    """Drag handle ``name`` by ``(dx_px, dy_px)`` pixels (y down, as the page counts) in ``steps`` moves.
-
-    Returns, per move, the data point under the pointer, the box of the picture after the move and θ₁."""
-    c = ex.canvas
-    W, H = c.picture["size"]
-    ml, mr, mt, mb = c.picture["margin"]
-    pw, ph = W - ml - mr, H - mt - mb
-
-    def data_of(px, py):                       # canvas.js dataOf, with the box the page holds now
-        b = c.picture["box"]
-        return b[0] + px / (pw / (b[1] - b[0])), b[2] + (ph - py) / (ph / (b[3] - b[2]))
-
-    b0 = c.picture["box"]
-    x0, y0 = ex.handle_position(name)
-    px0 = (x0 - b0[0]) * pw / (b0[1] - b0[0])
-    py0 = ph - (y0 - b0[2]) * ph / (b0[3] - b0[2])
-    moves = []
-    for k in range(1, steps + 1):
-        x, y = data_of(px0 + dx_px * k / steps, py0 + dy_px * k / steps)
-        assert c.handle_message({"type": "drag", "id": name, "x": x, "y": y, "seq": k}) == (True, "")
-        moves.append(((x, y), tuple(c.picture["box"]), float(ex.values[THETA])))
-    assert c.handle_message({"type": "release", "id": name, "seq": steps + 1}) == (True, "")
-    return tuple(b0), moves
+    """The drag (tests/_page_drag.py): the first box and, per move, the pointer's data point, the box and θ₁."""
+    b0, moves, _aimed = drag(ex, name, dx_px, dy_px, steps)
+    assert all(reply == (True, "") for _xy, reply, _b, _v in moves)
+    return b0, [(xy, box, float(values[THETA])) for xy, _reply, box, values in moves]
 
 
 @pytest.mark.parametrize("steps", [1, 10, 40])

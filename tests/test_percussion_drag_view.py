@@ -12,35 +12,16 @@ import pytest
 
 from planargeo.widgets.percussion import PercussionExplorer
 
+from _page_drag import page_drag as drag
+
 HANDLE = "axis (point)"        # on the centre of percussion: the foot of c on the axis (5.68)
 
 
 def page_drag(ex, name, dx_px, steps, dy_px=0.0):
-    """Drag handle ``name`` by ``(dx_px, dy_px)`` pixels in ``steps`` moves, as canvas.js sends them.
-
-    Returns the boxes of the picture during the drag (before the release) and the data point the
-    pointer was over at the last move (in the box it was drawn in when the drag began)."""
-    c = ex.canvas
-    W, H = c.picture["size"]
-    ml, mr, mt, mb = c.picture["margin"]
-    pw, ph = W - ml - mr, H - mt - mb
-
-    def data_of(px, py):                       # canvas.js dataOf, with the box the page holds now
-        b = c.picture["box"]
-        return b[0] + px / (pw / (b[1] - b[0])), b[2] + (ph - py) / (ph / (b[3] - b[2]))
-
-    b0 = c.picture["box"]
-    x0, y0 = ex.handle_position(name)
-    px0 = (x0 - b0[0]) * pw / (b0[1] - b0[0])
-    py0 = ph - (y0 - b0[2]) * ph / (b0[3] - b0[2])
-    boxes = [tuple(b0)]
-    for k in range(1, steps + 1):
-        x, y = data_of(px0 + dx_px * k / steps, py0 + dy_px * k / steps)
-        c.handle_message({"type": "drag", "id": name, "x": x, "y": y, "seq": k})
-        boxes.append(tuple(c.picture["box"]))
-    aimed = (b0[0] + (px0 + dx_px) * (b0[1] - b0[0]) / pw, b0[2] + (ph - py0 - dy_px) * (b0[3] - b0[2]) / ph)
-    assert c.handle_message({"type": "release", "id": name, "seq": steps + 1}) == (True, "")
-    return boxes, aimed
+    """The drag (tests/_page_drag.py): the picture's boxes during it (before the release) and the data
+    point the pointer was over at the last move (in the box it was drawn in when the drag began)."""
+    b0, moves, aimed = drag(ex, name, dx_px, dy_px, steps)
+    return [b0] + [box for _xy, _reply, box, _values in moves], aimed
 
 
 @pytest.mark.parametrize("steps", [1, 3, 30])
