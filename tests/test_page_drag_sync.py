@@ -48,6 +48,14 @@ def _release(ex, hid, seq):
     ex.canvas._on_msg(None, {"type": "release", "id": hid, "seq": seq}, None)
 
 
+def _shows_as_a_fresh(ex, cls):
+    """``ex`` shows what a fresh ``cls`` of its values shows: the same readout and picture."""
+    fresh = cls(display="page", **ex.values)
+    assert fresh.readout.value == ex.readout.value
+    assert json.dumps(fresh.canvas.picture, sort_keys=True, default=str) == \
+        json.dumps(ex.canvas.picture, sort_keys=True, default=str)
+
+
 def _names(log):
     return [kind for kind, _v in log]
 
@@ -70,10 +78,7 @@ def test_a_drag_holds_the_syncs_and_its_release_sends_them_after_the_picture():
     assert sent["x"] == ex.values["x"] == pytest.approx(1.0)
     assert sent["y"] == ex.values["y"] == pytest.approx(0.5)
     assert sent["readout"] == ex.readout.value
-    fresh = Dot(display="page", **ex.values)                   # what a fresh explorer shows
-    assert fresh.readout.value == ex.readout.value
-    assert json.dumps(fresh.canvas.picture, sort_keys=True, default=str) == \
-        json.dumps(ex.canvas.picture, sort_keys=True, default=str)
+    _shows_as_a_fresh(ex, Dot)                                 # what a fresh explorer shows
 
 
 def test_with_drag_sync_zero_every_step_sends_its_syncs():
@@ -124,10 +129,7 @@ def test_a_chain_dragged_in_the_page_agrees_with_a_fresh_chain_after_its_release
             assert last[k] == w.get_state()["value"]
     moved = [k for k in ex.controls if ex.values[k] != ChainExplorer(display="agg", links=4).values[k]]
     assert moved and all(k in last for k in moved)
-    fresh = ChainExplorer(display="page", **ex.values)
-    assert fresh.readout.value == ex.readout.value
-    assert json.dumps(fresh.canvas.picture, sort_keys=True, default=str) == \
-        json.dumps(ex.canvas.picture, sort_keys=True, default=str)
+    _shows_as_a_fresh(ex, ChainExplorer)
 
 
 def test_a_drag_from_python_ends_with_everything_sent():
